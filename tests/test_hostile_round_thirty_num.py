@@ -99,3 +99,29 @@ def test_a_stated_bound_is_on_its_allowed_side(bound, upper):
     value = float(text)
     assert (value <= bound) if upper else (value >= bound), text
     assert abs(value - bound) <= 1e-5 * bound or bound < 1e-300, text
+
+
+# -- C3: a span stopped a rounding before the contact's end dropped onto radius 0: an IndexError ---------------------
+
+@pytest.mark.parametrize("layer, scenario, tau0", [(me.Layer(), "A", 1e10), (me.Layer(1.0), "B", 1e10),
+                                                   (me.Layer(), "B", 1e12), (me.Layer(1.0), "A", 1e12)],
+                         ids=["half-space-A-1e10", "thick-layer-B-1e10", "half-space-B-1e12", "thick-layer-A-1e12"])
+def test_a_contact_that_ends_a_rounding_after_a_slip_event_ends(layer, scenario, tau0):
+    """C3: E = 1 kPa and τ0 = 1e10 Pa (τ0/E = 1e7; the caps ``π a τ0 / (2 G*)`` far above every shift until ``a``
+    nearly vanishes) without adhesion: the last span in contact stopped on the springs' full slip at a = 2e-11 m, a
+    rounding before the depth's 0, and the next plan dropped the radius onto the branch's 0 and laid out the slip zones
+    of no springs: ``IndexError: list index out of range`` (zones.py). The contact ends there, its event logged, every
+    variable finite, the extrema bounding the samples, and the run ends as a τ0 a thousand times smaller does."""
+    contact = me.Contact(SOFT, me.Paraboloid(0.03), friction=me.FrictionLaw("tau0", tau0=tau0), layer=layer)
+    ds = me.simulate(contact, me.Scenario(scenario, 45.0, 3e-4, 1e-6), method="continuum")
+    _every_variable_finite_in_contact(ds)
+    kinds = [str(kind) for kind in ds["event_kind"].values[0] if str(kind)]
+    assert kinds[-1] == "contact_ends", kinds
+    for name in ("normal_force", "tangential_force", "contact_area"):
+        samples = ds[name].values[0][np.isfinite(ds[name].values[0])]
+        assert ds[f"{name}_max"].values[0] >= samples.max() and ds[f"{name}_min"].values[0] <= samples.min(), name
+    reference = me.simulate(contact.replace(tau0=tau0 / 1e3),
+                            me.Scenario(scenario, 45.0, 3e-4, 1e-6), method="continuum")
+    ended = ds["event_time"].values[0][len(kinds) - 1]
+    assert ended == pytest.approx(reference["event_time"].values[0][list(reference["event_kind"].values[0]).index(
+        "contact_ends")], rel=1e-9)
