@@ -125,3 +125,32 @@ def test_a_contact_that_ends_a_rounding_after_a_slip_event_ends(layer, scenario,
     ended = ds["event_time"].values[0][len(kinds) - 1]
     assert ended == pytest.approx(reference["event_time"].values[0][list(reference["event_kind"].values[0]).index(
         "contact_ends")], rel=1e-9)
+
+
+# -- C4: the flat punch's critical angle on a layer divided by its cap, 0 at τ0 = 0: ZeroDivisionError ---------------
+
+@pytest.mark.parametrize("layer", [me.Layer(5e-3), me.Layer(1e-4)], ids=["5mm", "0.1mm"])
+@pytest.mark.parametrize("scenario", ["A", "B", "B+"])
+@pytest.mark.parametrize("adhesion", [True, False])
+def test_the_punch_s_critical_angle_without_tau0_is_a_right_angle(layer, scenario, adhesion):
+    """C4: ``critical_angle`` (and so ``phase_diagram``) of a FlatPunch on a bonded layer under ``τ0 = 0`` raised
+    ``ZeroDivisionError: float division by zero`` (punch_onset.punch_critical_angle: the travel over the cap ``ū = 0``).
+    Without a cap every spring slides at once on any path with a tangential part: 90°, as the paraboloid's closed forms on a
+    layer give."""
+    punch = me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.FlatPunch(1e-3), me.Adhesion(PAPER.dgamma0, PAPER.dgamma1),
+                       me.FrictionLaw("tau0", tau0=0.0), layer)
+    # (the paraboloid on the 5 mm layer: at 0.6 mm on 0.1 mm its radius passes the layer's tables, refused)
+    paraboloid = me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.Paraboloid(0.03), punch.adhesion, punch.friction,
+                            me.Layer(5e-3))
+    assert me.critical_angle(punch, scenario, adhesion=adhesion) == 90.0
+    assert me.critical_angle(paraboloid, scenario, adhesion=adhesion) == 90.0
+
+
+def test_the_punch_s_phase_diagram_without_tau0_runs():
+    """C4: the phase diagram of the case that showed it (scenario A, 5 mm layer, the paper's works) runs, its critical
+    angle 90°."""
+    punch = me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.FlatPunch(1e-3), me.Adhesion(PAPER.dgamma0, PAPER.dgamma1),
+                       me.FrictionLaw("tau0", tau0=0.0), me.Layer(5e-3))
+    diagram = me.phase_diagram(punch, scenario="A")
+    critical = [name for name in diagram.data_vars if "critical" in name]
+    assert critical and all(np.all(diagram[name].values == 90.0) for name in critical), critical
