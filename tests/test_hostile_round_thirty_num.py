@@ -154,3 +154,19 @@ def test_the_punch_s_phase_diagram_without_tau0_runs():
     diagram = me.phase_diagram(punch, scenario="A")
     critical = [name for name in diagram.data_vars if "critical" in name]
     assert critical and all(np.all(diagram[name].values == 90.0) for name in critical), critical
+
+
+#: A table flat (1e-15 m rises) to 1 mm, then steep: its reach depends on the works of adhesion.
+PLATEAU = me.TabulatedProfile((0.0, 2.5e-4, 5e-4, 7.5e-4, 1e-3, 1.5e-3, 2e-3, 3e-3),
+                              (0.0, 1e-15, 2e-15, 3e-15, 4e-15, 1e-4, 3e-4, 1e-3))
+
+
+@pytest.mark.parametrize("works", [(0.1, 0.1), (5.0, 20.0)], ids=["equal", "large"])
+def test_the_stated_reach_of_a_table_is_accepted(works):
+    """C2 (the table's reach): a path deeper than the table reaches is refused with "allowed ...: at most 0.00222153 m",
+    the reach rounded to nearest; that depth was refused again (22 of 48 tables x works x moduli). The depth stated
+    now runs."""
+    contact = me.Contact(me.Elastomer(PAPER.E, PAPER.nu), PLATEAU, me.Adhesion(*works))
+    deepest = _stated(r"at most ([0-9.e+-]+) m", lambda: me.simulate(contact, me.Scenario("A", 45.0, 5e-2), "discrete"))
+    ds = me.simulate(contact, me.Scenario("A", 45.0, deepest), method=me.Discrete(n_steps=50))
+    _every_variable_finite_in_contact(ds)
