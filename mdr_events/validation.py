@@ -15,7 +15,7 @@ from typing import Any, Callable, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "cut_text", "validate_alpha", "check_callback", "reads_attrs"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "cut_text", "validate_alpha", "check_callback", "reads_attrs", "allowed_bound"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -149,6 +149,46 @@ SCALE_MIN = math.sqrt(sys.float_info.min)
 #: The largest count any argument takes (steps, samples, workers): far beyond every resource limit, and exactly a
 #: double, so that sizes derived from it stay numbers.
 MAX_COUNT = 2**53
+
+
+def allowed_bound(bound: float, allowed: Callable[[float], bool], upper: bool, digits: int = 6) -> str:
+    """A bound of a message's "allowed: ..." in ``digits`` significant digits, rounded towards the allowed side (down
+    for an upper bound, up for a lower one) and checked with ``allowed`` (a step of the last digit further while it
+    fails): the number a user copies from the message is accepted (round thirty: "dx <= 2.12207e-07 m", rounded
+    to nearest from 2.122066e-07, was refused with the same message).
+
+    Parameters
+    ----------
+    bound : float
+        The bound, finite.
+    allowed : callable
+        Whether a value is accepted (the check the bound comes from).
+    upper : bool
+        Whether the values allowed are at most ``bound`` (else at least).
+    digits : int, default 6
+        Significant digits shown.
+
+    Returns
+    -------
+    str
+        The number as ``format(value, f".{digits}g")`` writes it.
+    """
+    import decimal
+
+    context = decimal.Context(prec=digits, rounding=decimal.ROUND_FLOOR if upper else decimal.ROUND_CEILING)
+    value = context.create_decimal(bound)
+    for _ in range(BOUND_STEPS):
+        if allowed(float(value)):
+            break
+        value = context.next_minus(value) if upper else context.next_plus(value)
+    if not math.isfinite(float(value)):  # (a bound within a digit of the largest double: shown whole)
+        return repr(float(bound))
+    return format(float(value), f".{digits}g")
+
+
+#: How many steps of the last digit :func:`allowed_bound` takes at most towards the allowed side (one suffices but for
+#: a bound whose check rounds the other way; beyond, the rounded bound is shown as it is).
+BOUND_STEPS = 4
 
 
 def check_count(name: str, value: Any, minimum: int) -> int:

@@ -21,7 +21,7 @@ from mdr_events.models.spring_media import HalfSpaceSprings, Springs, springs_of
 from mdr_events.models.spring_thresholds import spring_thresholds
 from mdr_events.parameters import Parameters
 from mdr_events.theory.kinds import theory_of
-from mdr_events.validation import check_real
+from mdr_events.validation import allowed_bound, check_real
 
 __all__ = ["MIN_SPRINGS_IN_CONTACT"]
 
@@ -63,7 +63,7 @@ def _beyond_the_tables(springs: Springs, dx: float, max_depth: float, needed: in
     thickness = springs.layer.thickness  # (only a layer's springs are bounded: the half-space's most is sys.maxsize)
     reach, radius = LAMBDA_MAX * thickness, springs.branch_radius(max_depth)
     finer = (reach - radius) / SPRINGS_TO_THE_TABLES_EDGE
-    spacing = (f"dx <= {finer:.3g} m (the contact radius {radius:.6g} m is {reach - radius:.3g} m within the tables' "
+    spacing = (f"dx <= {allowed_bound(finer, lambda value: value <= finer, True, 3)} m (the contact radius {radius:.6g} m is {reach - radius:.3g} m within the tables' "
                f"64 h = {reach:.6g} m), " if finer > 0 else
                f"no dx (the contact radius {radius:.6g} m reaches the tables' 64 h = {reach:.6g} m), but ")
     smaller = (f"a face's radius below {reach:.6g} m (with a dx that fits {SPRINGS_TO_THE_TABLES_EDGE} springs "
@@ -86,7 +86,8 @@ def check_spacing(params: Parameters, dx: float, depth: float | None = None, pro
         raise ValueError(
             f"dx={dx!r} m puts {int(radius // dx) if radius == radius else 0} springs per side in contact "
             f"at the deepest point d = {depth!r} m; "
-            f"allowed: at least {MIN_SPRINGS_IN_CONTACT}, i.e. dx <= {radius / MIN_SPRINGS_IN_CONTACT:.6g} m"
+            f"allowed: at least {MIN_SPRINGS_IN_CONTACT}, i.e. dx <= "
+            f"{allowed_bound(radius / MIN_SPRINGS_IN_CONTACT, lambda most: radius / most >= MIN_SPRINGS_IN_CONTACT, True)} m"
         )
     return dx
 

@@ -20,6 +20,7 @@ from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw, Tabula
 from mdr_events.theory import mindlin, tabulated
 from mdr_events.theory.branches import branch_radius, jump_off
 from mdr_events.theory.kinds import theory_of
+from mdr_events.validation import allowed_bound
 
 __all__ = ["MIN_SIMULATED_EXPONENT", "SimulatedProfile", "check_simulated_profile", "check_reach", "branch_radius", "jump_off", "spring_profile",
            "profile_attrs", "critical_angle"]
@@ -66,7 +67,8 @@ def check_reach(params: Parameters, depth: float, profile: SimulatedProfile, lab
     depth."""
     deepest = theory_of(profile).deepest(profile, params, params.dgamma0)
     if depth > deepest:
-        where = (f"at most {deepest:.6g} m, where the contact radius reaches the table's last radius" if deepest > 0 else
+        where = (f"at most {allowed_bound(deepest, lambda most: most <= deepest, True)} m, where the contact radius "
+                 "reaches the table's last radius" if deepest > 0 else
                  f"none: with this adhesion the contact radius reaches the table's last radius above the surface "
                  f"(at d = {deepest:.3g} m)")
         raise ValueError(f"{label} reaches the depth {depth:.6g} m; allowed for {profile.describe()!r}: {where} (a "

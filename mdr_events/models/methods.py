@@ -45,7 +45,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models.simulation_schema import SIMULATION_CONTENT, continuum_dataset, simulation_dataset
 from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.layer.punch_onset import check_punch_face
-from mdr_events.validation import MAX_COUNT, check_count, check_output_times, check_real, shown
+from mdr_events.validation import MAX_COUNT, allowed_bound, check_count, check_output_times, check_real, shown
 
 __all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_counted_first", "check_time_step",
            "DEFAULT_DX", "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT", "exact_solution",
@@ -218,7 +218,8 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
     count = longest / step
     if dt is not None and not count <= MAX_COUNT:  # (round twenty-one: dt=5e-324 gave int(inf), an internal error)
         raise ValueError(f"dt={shown(dt)} is not allowed: the longest case's {longest:.6g} s from first contact would "
-                         f"take {count:.3g} steps; allowed: a time step in s >= {longest / MAX_COUNT:.3g} (at most "
+                         f"take {count:.3g} steps; allowed: a time step in s >= "
+                         f"{allowed_bound(longest / MAX_COUNT, lambda least: longest / least <= MAX_COUNT, False, 3)} (at most "
                          f"{MAX_COUNT:.0e} steps, which the limits refuse long before: --limit steps)")
     shortest = math.inf
     for path in paths:
@@ -230,13 +231,14 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
     largest = shortest / MIN_STEPS_PER_SEGMENT
     if step <= largest * (1 + 1e-12):
         return
+    most = allowed_bound(largest, lambda value: value <= largest * (1 + 1e-12), True)
     if dt is not None:
         raise ValueError(f"dt={shown(dt)} is too coarse: the shortest path segment in contact lasts {shortest:.6g} s; "
-                         f"allowed: dt <= {largest:.6g} s ({MIN_STEPS_PER_SEGMENT} steps per segment)")
+                         f"allowed: dt <= {most} s ({MIN_STEPS_PER_SEGMENT} steps per segment)")
     needed = math.ceil(longest / largest)
     given = DEFAULT_STEPS if n_steps is None else n_steps
     raise ValueError(f"n_steps={shown(given)} is too few: the shortest path segment in contact lasts {shortest:.6g} s of "
-                     f"{longest:.6g} s; allowed: n_steps >= {needed} (or dt <= {largest:.6g} s)")
+                     f"{longest:.6g} s; allowed: n_steps >= {needed} (or dt <= {most} s)")
 
 
 @dataclass(frozen=True, eq=False)

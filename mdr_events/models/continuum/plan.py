@@ -198,6 +198,10 @@ def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) 
     entry = () if state.detaching else (EventKind.DETACHMENT_STARTS,)
     rtol = model.tolerances.radius_rtol
     on_branch = model.shrink.radius(d, rtol)
+    if on_branch == 0.0:  # (the branch has no contact left at d: the held radius comes off here, round thirty: a span
+        # stopped by a slip event a rounding before the contact's end, 2e-11 m at tau0/E = 1e7, dropped onto radius 0
+        # and laid out the slip zones of no springs, an IndexError)
+        return SpanPlan(Action.COME_OFF, Regime.PINNED, t, t, ending, a, force)
     if on_branch < a * (1.0 - RADIUS_DROP_SHARE):
         # Δγ1 < Δγ0: the boundary springs are stretched beyond the Δγ1 limit and the radius drops onto the
         # Δγ1 branch at once; the springs it loses take their force with them and the smaller cap ū(a)

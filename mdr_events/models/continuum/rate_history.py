@@ -58,7 +58,11 @@ class _Piece:
             self._splits()
 
     def radii(self, times: np.ndarray) -> np.ndarray:
-        return np.full(times.shape, self.a0) if not self.moving else self.solution(times)[0]
+        """The radius at ``times`` within the piece: its ends' radii bound it (the steps' polynomials may overshoot
+        an end by the solver's error where the edge stops: a spring beyond the end radius would match no attachment)."""
+        if not self.moving:
+            return np.full(times.shape, self.a0)
+        return np.clip(self.solution(times)[0], min(self.a0, self.a1), max(self.a0, self.a1))
 
     def _splits(self) -> None:
         """The step ends inside the piece where the mean speed of the step after it differs from that after the last

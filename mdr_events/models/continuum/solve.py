@@ -199,7 +199,7 @@ def advance(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment:
         solution.spans.append(Span(plan.t_start, plan.t_start, segment, Regime.PINNED, pinned_radius=plan.radius,
                                    force=plan.force, anchors=state.anchors.copy()))
         end_contact(state)
-        return [(EventKind.PULL_OFF, plan.t_start, plan.radius, 0)]
+        return [(plan.end_kind, plan.t_start, plan.radius, 0)]
     logged = enter(model, state, plan, segment)
     span = Span(plan.t_start, plan.t_end, segment, plan.regime, pinned_radius=plan.radius,
                 roots={root_key(depth, rtol): radius for depth, rtol, radius in plan.roots})

@@ -205,12 +205,19 @@ def punch_critical_angle(contact: Contact, scenario: str, adhesion: bool, final_
     depth = check_punch_contact(contact, "critical_angle", d_max)
     face = float(contact.indenter.radius)
     if scenario == "A":
-        return float(np.degrees(np.arctan(depth / float(_cap(contact, face)))))
+        return _angle(depth, float(_cap(contact, face)))
     if scenario == "B+":
         end = 2.0 * depth if final_depth is None else check_real(
             "final_depth", final_depth, f"a finite depth > d_max = {depth!r} m", lambda value: value > depth)
-        return float(np.degrees(np.arctan((end - depth) / float(_cap(contact, face)))))
+        return _angle(end - depth, float(_cap(contact, face)))
     # (the travel per cap r(a) = (d_max + Δl(a))/ū(a) falls with a on [a_j, a₀]: Δl falls there (the recession) and
     # ū = π a τ0/(2G* Φ_t(a/h)) rises with a on every bonded layer of the tables; its maximum is r(a_j))
     jump_depth, jump_radius = punch_jump_off(contact, contact.adhesion.dgamma1 if adhesion else 0.0)
-    return float(np.degrees(np.arctan((depth - jump_depth) / float(_cap(contact, jump_radius)))))
+    return _angle(depth - jump_depth, float(_cap(contact, jump_radius)))
+
+
+def _angle(travel: float, cap: float) -> float:
+    """The path angle (degrees) whose tangent is the depth travelled per cap, ``travel / ū``; 90° where the cap is 0
+    (``τ0 = 0``: every spring slides at once on any path with a tangential part, as the closed forms of the other
+    indenters give; round thirty: ``ZeroDivisionError`` in a phase diagram of the punch on a layer)."""
+    return 90.0 if cap == 0.0 else float(np.degrees(np.arctan(travel / cap)))
