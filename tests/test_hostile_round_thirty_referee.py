@@ -206,3 +206,22 @@ def test_the_cli_refuses_a_file_of_one_run_at_another_angle(other_angle_run, tmp
     err = cli_one_line(capsys, ["validate", str(path), "--scenario", "A", "--alpha", str(ALPHA), "--tolerance",
                                 str(SPRING_TOLERANCE), "--out", str(tmp_path / "out")])
     assert "alpha=21" in err
+
+
+#: An angle that float32 does not hold exactly (degrees): 20.1 is 20.100000381... in float32.
+INEXACT_ALPHA = 20.1
+
+
+def test_a_run_labelled_in_float32_is_its_own_angle_and_not_its_neighbours():
+    """The review's case: a right run whose ``alpha`` is stored as float32 (20.1 → 20.100000381) was refused as
+    "one run at alpha=20.1, not at alpha=20.1"; a label is compared within its own precision (``SELECT_ULPS`` of
+    its type), alone or among several runs, and a neighbouring angle's run in float32 is still refused."""
+    contact = me.Contact.paper()
+    runs = me.simulate(contact, me.Scenario("A", alpha=[ALPHA, INEXACT_ALPHA]), "continuum")
+    narrow = runs.assign_coords(alpha=runs["alpha"].astype("float32"))
+    for candidate in (narrow, narrow.isel(alpha=[1]), narrow.isel(alpha=1)):
+        assert me.validate(candidate, contact, "A", INEXACT_ALPHA,
+                           tolerance=CONTINUUM_TOLERANCE).attrs["verdict"] == "pass"
+    message = one_line_naming(lambda: me.validate(narrow.isel(alpha=[0]), contact, "A", INEXACT_ALPHA,
+                                                  tolerance=CONTINUUM_TOLERANCE), "alpha=20.0")
+    assert f"alpha={INEXACT_ALPHA!r}" in message

@@ -44,6 +44,9 @@ def columns_listed(columns) -> str:
 
 #: How far a run's coordinate (an angle in degrees) may lie from the one ``select`` names and still be that run.
 SELECT_ATOL = 1e-9
+#: ... or, for a coordinate stored in fewer digits (float32: an angle of 20.1° is 20.100000381°), this many of its
+#: own ulps at the value: the label rounded to its type lies within half an ulp of the value it was made from.
+SELECT_ULPS = 2.0
 #: The kinds of NumPy arrays a column of real numbers has: integers and floats (not bools, complex numbers, times).
 REAL_KINDS = "iuf"
 #: What the mapping arguments of :func:`read_candidate` look like, for a message.
@@ -300,7 +303,7 @@ def _selected(dataset: xr.Dataset, source: str, select: Mapping[str, object]) ->
         if dimension in dataset.dims and dataset.sizes[dimension] > 1:
             value = check_real(f"select[{dimension!r}]", value, "one coordinate value, a number")
             values = dataset[dimension].values
-            matches = np.flatnonzero(np.isclose(values.astype(float), float(value), rtol=0.0, atol=SELECT_ATOL))
+            matches = np.flatnonzero(_labelled_as(values, value))
             if matches.size != 1:
                 raise ValueError(f"{source} holds runs along {dimension!r} at {', '.join(f'{v:g}' for v in values)}, "
                                  f"not at {dimension}={value!r}; allowed: one of those")
@@ -308,13 +311,21 @@ def _selected(dataset: xr.Dataset, source: str, select: Mapping[str, object]) ->
     return dataset
 
 
+def _labelled_as(labels: np.ndarray, value: float) -> np.ndarray:
+    """Which ``labels`` (a coordinate's values) name the run at ``value``: within :data:`SELECT_ATOL`, or
+    :data:`SELECT_ULPS` of the labels' own precision (a float32 coordinate)."""
+    labels = np.asarray(labels)
+    spacing = np.finfo(labels.dtype).eps * abs(value) if np.issubdtype(labels.dtype, np.floating) else 0.0
+    return np.isclose(labels.astype(float), value, rtol=0.0, atol=max(SELECT_ATOL, SELECT_ULPS * spacing))
+
+
 def _check_labelled_at(dataset: xr.Dataset, source: str, dimension: str, value: object) -> None:
     """Refuse one run whose numeric coordinate ``dimension`` is not ``value`` (within the tolerance of several runs'
     selection, :data:`SELECT_ATOL`)."""
     value = check_real(f"select[{dimension!r}]", value, "one coordinate value, a number")
-    labelled = float(dataset[dimension].values.ravel()[0])
-    if not np.isclose(labelled, float(value), rtol=0.0, atol=SELECT_ATOL):
-        raise ValueError(f"{source} holds one run at {dimension}={labelled:g}, not at {dimension}={value!r}; allowed: "
+    labels = dataset[dimension].values.ravel()
+    if not _labelled_as(labels, value)[0]:
+        raise ValueError(f"{source} holds one run at {dimension}={float(labels[0])!r}, not at {dimension}={value!r}; allowed: "
                          f"the run's own {dimension} (another run's output judged as this one's would pass or fail "
                          "for the wrong reason)")
 
