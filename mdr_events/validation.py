@@ -6,6 +6,7 @@ user sees the same kind of sentence whichever function rejects the value.
 
 from __future__ import annotations
 
+import decimal
 import functools
 import math
 import sys
@@ -151,6 +152,11 @@ SCALE_MIN = math.sqrt(sys.float_info.min)
 MAX_COUNT = 2**53
 
 
+#: How many steps of the last digit :func:`allowed_bound` takes at most towards the allowed side (one suffices but for
+#: a bound whose check rounds the other way; beyond, the rounded bound is shown as it is).
+BOUND_STEPS = 4
+
+
 def allowed_bound(bound: float, allowed: Callable[[float], bool], upper: bool, digits: int = 6) -> str:
     """A bound of a message's "allowed: ..." in ``digits`` significant digits, rounded towards the allowed side (down
     for an upper bound, up for a lower one) and checked with ``allowed`` (a step of the last digit further while it
@@ -173,8 +179,6 @@ def allowed_bound(bound: float, allowed: Callable[[float], bool], upper: bool, d
     str
         The number as ``format(value, f".{digits}g")`` writes it.
     """
-    import decimal
-
     context = decimal.Context(prec=digits, rounding=decimal.ROUND_FLOOR if upper else decimal.ROUND_CEILING)
     value = context.create_decimal(bound)
     for _ in range(BOUND_STEPS):
@@ -184,11 +188,6 @@ def allowed_bound(bound: float, allowed: Callable[[float], bool], upper: bool, d
     if not math.isfinite(float(value)):  # (a bound within a digit of the largest double: shown whole)
         return repr(float(bound))
     return format(float(value), f".{digits}g")
-
-
-#: How many steps of the last digit :func:`allowed_bound` takes at most towards the allowed side (one suffices but for
-#: a bound whose check rounds the other way; beyond, the rounded bound is shown as it is).
-BOUND_STEPS = 4
 
 
 def check_count(name: str, value: Any, minimum: int) -> int:

@@ -229,9 +229,13 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
             if t1 > start:
                 shortest = min(shortest, t1 - max(t0, start))
     largest = shortest / MIN_STEPS_PER_SEGMENT
-    if step <= largest * (1 + 1e-12):
+
+    def fine_enough(value: float) -> bool:
+        return value <= largest * (1 + 1e-12)
+
+    if fine_enough(step):
         return
-    most = allowed_bound(largest, lambda value: value <= largest * (1 + 1e-12), True)
+    most = allowed_bound(largest, fine_enough, True)
     if dt is not None:
         raise ValueError(f"dt={shown(dt)} is too coarse: the shortest path segment in contact lasts {shortest:.6g} s; "
                          f"allowed: dt <= {most} s ({MIN_STEPS_PER_SEGMENT} steps per segment)")
