@@ -15,7 +15,7 @@ from typing import Any, Callable, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "cut_text", "validate_alpha", "check_callback", "reads_attrs"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "as_name", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "cut_text", "validate_alpha", "check_callback", "reads_attrs"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -221,24 +221,40 @@ def check_output_times(name: str, value: Any) -> np.ndarray:
     return times
 
 
-def check_choice(name: str, value: Any, allowed: Collection) -> None:
-    """Raise ``ValueError`` unless ``value`` is one of ``allowed``.
+def as_name(value: Any) -> Any:
+    """``value`` as a name: a 0-d array of text (``np.array("A")``, what indexing a NumPy array of names gives) read as
+    its ``str``, and a subclass of ``str`` (``np.str_``, a user's) as the plain ``str`` it spells; anything else as it
+    is (refused by the check that reads it)."""
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind == "U":
+        return str(value[()])
+    return str(value) if isinstance(value, str) else value
+
+
+def check_choice(name: str, value: Any, allowed: Collection) -> str:
+    """The name ``value`` gives (:func:`as_name`) if it is one of ``allowed``, else ``ValueError``.
 
     Parameters
     ----------
     name : str
         The argument's name, as the user wrote it.
     value : object
-        The value given.
+        The value given: a ``str`` (or a subclass of it) or a 0-d array of text.
     allowed : collection
-        The allowed values, listed (as their ``repr``) in the message.
+        The allowed names, listed (as their ``repr``) in the message.
+
+    Returns
+    -------
+    str
+        The name, a plain ``str`` (what the caller keeps and writes in a file's attributes).
     """
+    chosen = as_name(value)
     try:  # (an array compared with each name answers with an array, whose truth is ambiguous)
-        known = not isinstance(value, np.ndarray) and value in allowed
+        known = not isinstance(chosen, np.ndarray) and chosen in allowed
     except (TypeError, ValueError):  # (a list or a dict: unhashable, in no set or mapping of names; a DataFrame)
         known = False
     if not known:
         raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {', '.join(map(repr, allowed))}")
+    return chosen
 
 
 def check_flag(name: str, value: Any) -> None:

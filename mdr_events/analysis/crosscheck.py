@@ -148,8 +148,10 @@ def cross_check(contact: ContactLike, scenario: str = "A", alpha=(10.0, 15.0, 20
         The variables of :data:`CROSS_CHECK_VARIABLES` along ``alpha`` (see the module's docstring).
     """
     params = paper_parameters(contact, "cross_check", d_max)
-    check_choice("scenario", scenario, analytic.SCENARIOS)
-    methods = Continuum(), Discrete(dx=dx, n_steps=n_steps)
+    scenario = check_choice("scenario", scenario, analytic.SCENARIOS)
+    discrete_method = Discrete(dx=dx, n_steps=n_steps)
+    dx, steps = discrete_method.dx, {} if n_steps is None else {"n_steps": discrete_method.n_steps}  # (as run: floats)
+    methods = Continuum(), discrete_method
     for method in methods:  # (the angles counted as the runs count their cases, before they are read: 1e7 took 1.4 GB)
         method.check_case_count(values_in(alpha), DEFAULT_LIMITS)
     angles = np.atleast_1d(validate_alpha(alpha))

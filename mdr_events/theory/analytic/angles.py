@@ -84,7 +84,7 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
         The critical angle in degrees (90 where slip always comes first).
     """
     p = None if on_layer(contact) else _onset_parameters(contact, "critical_angle", d_max)
-    check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
+    scenario = check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
     check_flag("adhesion", adhesion)
     if final_depth is not None and scenario != "B+":
         raise ValueError(f"final_depth={shown(final_depth)} is not allowed with scenario {scenario!r}; "
