@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import functools
 import math
+import os
 import sys
 import numbers
 from collections.abc import Mapping
@@ -15,7 +16,7 @@ from typing import Any, Callable, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "as_name", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "cut_text", "validate_alpha", "check_callback", "reads_attrs"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "as_name", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "shown_path", "PATH_CHARACTERS", "cut_text", "validate_alpha", "check_callback", "reads_attrs"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -38,13 +39,33 @@ def shown(value: Any) -> str:
     return cut_text(" ".join(repr(value).split()))
 
 
+def _printable(text: str) -> str:
+    """``text`` with its control characters written as ``repr`` writes them (one line, no raw escape sequence)."""
+    return text if text.isprintable() else "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+
+
 def shown_text(text: str, characters: int = SHOWN_CHARACTERS) -> str:
     """A name written bare in a message (a table's, a file's stem, a column's): its control characters written as
     ``repr`` writes them, cut to ``characters`` characters (:func:`shown` quotes it: a value, not a name)."""
-    text = str(text)
-    if not text.isprintable():
-        text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
-    return cut_text(text, characters)
+    return cut_text(_printable(str(text)), characters)
+
+
+#: Characters of a file's path shown in a message: a deep path is shown whole; a text given where a path goes (a
+#: CSV file's content, 40 kB) is cut in its middle.
+PATH_CHARACTERS = 200
+#: Characters of the start of a path cut by :func:`shown_path` (the rest of :data:`PATH_CHARACTERS` is its end).
+PATH_HEAD_CHARACTERS = 60
+
+
+def shown_path(path: Any, quoted: bool = False) -> str:
+    """A file's path as a message names it, on one line: its text (``bytes`` decoded as the file system does) with
+    its control characters written as ``repr`` writes them (or, ``quoted``, its ``repr``), and one longer than
+    :data:`PATH_CHARACTERS` cut in its middle, its start and its end (the file's name) kept around ``...``."""
+    text = os.fsdecode(path) if isinstance(path, (str, bytes, os.PathLike)) else str(path)
+    text = repr(text) if quoted else _printable(text)
+    if len(text) <= PATH_CHARACTERS:
+        return text
+    return text[:PATH_HEAD_CHARACTERS] + "..." + text[len(text) - (PATH_CHARACTERS - PATH_HEAD_CHARACTERS - 3):]
 
 
 #: What a number written as text may be (an option's value, a string of a study file, a CSV cell): :func:`plain_number`.

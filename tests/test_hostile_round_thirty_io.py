@@ -9,8 +9,9 @@ import numpy as np
 import pytest
 
 import mdr_events as me
+from mdr_events.io.candidates import read_profile_table
 from mdr_events.validation import check_choice
-from hostile_checks import one_line_naming
+from hostile_checks import cli_one_line, one_line_naming
 
 CONTACT = me.Contact.paper()
 
@@ -63,4 +64,63 @@ def test_check_choice_returns_the_plain_name():
     for form in NAME_FORMS.values():
         chosen = check_choice("scenario", form("B"), ("A", "B"))
         assert chosen == "B" and type(chosen) is str
+
+
+#: A CSV file's text given where its path goes (40 kB: what ``validate(open(f).read(), ...)`` passes).
+CSV_TEXT = "time,normal_force\n" + "0.1,1e-3\n" * 4000
+#: The longest message naming a path that is not one: the path is cut to ``validation.PATH_CHARACTERS`` (200) and
+#: each value shown to 80; the rest is the sentence.
+PATH_MESSAGE_CHARACTERS = 700
+
+
+def _names_the_path_short(message: str, path: str) -> None:
+    """One line of at most PATH_MESSAGE_CHARACTERS that still names the path: its start and its end."""
+    start, end = path[:20].replace("\n", "\\n"), path[-20:].replace("\n", "\\n")
+    assert "\n" not in message and len(message) <= PATH_MESSAGE_CHARACTERS, (len(message), message[:300])
+    assert start in message and end in message, message[:300]
+
+
+@pytest.mark.parametrize("path", [CSV_TEXT, "d/" * 2000 + "run.csv", "a\nb" * 100 + ".csv"],
+                         ids=["CSV text", "deep path", "newlines"])
+@pytest.mark.parametrize("call", [
+    lambda path: me.validate(path, CONTACT, "A", 20.0),
+    lambda path: me.fit(path, CONTACT, "A", 20.0, free=["tau0"]),
+    lambda path: me.open_result(path),
+    lambda path: me.load_study(path),
+    lambda path: read_profile_table(path),
+], ids=["validate", "fit", "open_result", "load_study", "read_profile_table"])
+def test_a_missing_file_is_named_short(call, path):
+    """NIT (c) of round 29's review, class 5: "no such file" showed the path whole, so a CSV file's text passed as its
+    path (``validate(open("run.csv").read(), ...)``) printed a line of 40 kB, and a study file's name with newlines
+    printed 2000 lines (``load_study``). A path is now shown by ``validation.shown_path``: on one line (control
+    characters escaped), cut in its middle to 200 characters, its start and end (the file's name) kept."""
+    with pytest.raises((ValueError, TypeError)) as caught:
+        call(path)
+    _names_the_path_short(str(caught.value), path)
+    if isinstance(path, str) and len(path) < 200:
+        assert path.replace("\n", "\\n") in str(caught.value)
+
+
+def test_a_bad_file_is_named_short(tmp_path):
+    """A file that exists but is wrong (empty, a bad row) under a name of control characters: named on one line."""
+    path = tmp_path / ("run\x1b[31m\n" * 3 + ".csv")
+    path.write_text("time,normal_force\n0,1\n1,x\n", encoding="utf-8")
+    message = one_line_naming(lambda: me.validate(path, CONTACT, "A", 20.0), "line 3")
+    assert "\x1b" not in message and str(path).replace("\n", "\\n").replace("\x1b", "\\x1b") in message
+
+
+@pytest.mark.parametrize("argv", [
+    lambda path: ["validate", path, "--scenario", "A", "--alpha", "20", "--out", "o"],
+    lambda path: ["fit", "--free", "tau0", "--scenario", "A", "--alpha", "20", "--out", "o", path],
+    lambda path: ["run", path],
+    lambda path: ["simulate", "--scenario", "A", "--alpha", "20", "--out", "o", "--table", path],
+    lambda path: ["phase-diagram", "--scenario", "A", "--out", "o", "--table", path],
+    lambda path: ["validate", "x.csv", "--params", path, "--scenario", "A", "--alpha", "20", "--out", "o"],
+], ids=["validate", "fit", "run", "simulate --table", "phase-diagram --table", "validate --params"])
+@pytest.mark.parametrize("path", [CSV_TEXT, "d/" * 2000 + "x.csv"], ids=["CSV text", "deep path"])
+def test_the_command_line_names_a_long_path_short(capsys, tmp_path, monkeypatch, argv, path):
+    """The CLI's own messages of a path: ``the run <path> would be written as <stem>.*`` (54 kB for the CSV text),
+    ``--table <path>: table='<path>': no such file`` (57 kB): one line, the path cut."""
+    monkeypatch.chdir(tmp_path)
+    _names_the_path_short(cli_one_line(capsys, argv(path)).rstrip("\n"), path)
 

@@ -316,7 +316,7 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress) -> _Sample
     short in contact), solve the exact run (unless at hand) and sort the samples."""
     read = read_candidate(candidate, job.names, job.units, limits, select=job.select, progress=progress)
     if not any(name in COMPARED for name in read.quantities):
-        raise ValueError(f"{read.source}: none of {', '.join(COMPARED)} found (columns read: "
+        raise ValueError(f"{read.where}: none of {', '.join(COMPARED)} found (columns read: "
                          f"{', '.join(read.quantities)}); allowed: at least one of them (the sliding fraction alone "
                          "serves only the events)")
     check_run_is_finite(read, in_contact(read.quantities), job.names)
@@ -326,10 +326,10 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress) -> _Sample
     quantities = dict(read.quantities)
     contact = in_contact(quantities)
     if not np.any(contact):
-        raise ValueError(f"{read.source}: the candidate never touches (no sample in contact); allowed: a run "
+        raise ValueError(f"{read.where}: the candidate never touches (no sample in contact); allowed: a run "
                          "that makes contact")
     check_run_covers_the_contact(read, times, contact, solution, job.names)
-    codes, compared = compared_samples(read.source, times, exact, quantities, contact, solution)
+    codes, compared = compared_samples(read.where, times, exact, quantities, contact, solution)
     return _Samples(read, times, solution, exact, quantities, contact, codes, compared)
 
 

@@ -41,7 +41,7 @@ from mdr_events.io import netcdf3
 from mdr_events.io.paths import (ALLOWED_FILE, ALLOWED_PATH, TEMPORARY_MARKER, check_file_path,  # noqa: F401 - as before
                                  check_output_file, check_output_stem, input_file_problem, is_temporary_name,
                                  prepare_output_directory)
-from mdr_events.validation import shown
+from mdr_events.validation import shown, shown_path
 
 try:  # POSIX: a writer locks its temporary file, so that another process never takes it for stale
     import fcntl
@@ -191,7 +191,7 @@ def _prepared_target(path: str | os.PathLike) -> Path:
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
     except OSError as error:  # a race, or a file system that refuses (a read-only mount, /proc)
-        raise ValueError(f"path={os.fspath(path)!r} is not allowed (its directory cannot be created: "
+        raise ValueError(f"path={shown_path(path, quoted=True)} is not allowed (its directory cannot be created: "
                          f"{error.strerror}); allowed: {ALLOWED_FILE}") from None
     return target
 
@@ -242,7 +242,8 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
                 handle, temporary = tempfile.mkstemp(prefix=f".{target.name}{TEMPORARY_MARKER}", suffix=file.suffix,
                                                      dir=target.parent)
             except OSError as error:  # the directory takes no new file (a read-only mount, /proc)
-                raise ValueError(f"path={os.fspath(file.path)!r} is not allowed (no file can be created there: "
+                raise ValueError(f"path={shown_path(file.path, quoted=True)} is not allowed (no file can be created "
+                                 "there: "
                                  f"{error.strerror}); allowed: {ALLOWED_FILE}") from None
             handles.append(handle)
             temporaries.append(temporary)
@@ -387,7 +388,7 @@ def open_result(path: str | os.PathLike) -> xr.Dataset:
     xarray.Dataset
         The result, loaded into memory (the file is closed), with its stamp and parameters as attributes.
     """
-    where = repr(os.fspath(check_file_path("path", path, f"{ALLOWED_PATH} naming a netCDF file")))
+    where = shown_path(check_file_path("path", path, f"{ALLOWED_PATH} naming a netCDF file"), quoted=True)
     dataset = load_netcdf(path, where)
     _check_stamp(dataset, where)
     _check_variables(dataset, where)
