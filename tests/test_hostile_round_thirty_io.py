@@ -124,3 +124,40 @@ def test_the_command_line_names_a_long_path_short(capsys, tmp_path, monkeypatch,
     monkeypatch.chdir(tmp_path)
     _names_the_path_short(cli_one_line(capsys, argv(path)).rstrip("\n"), path)
 
+
+#: New directory levels below an output's or a cache's path: pathlib's ``mkdir(parents=True)`` and ``os.makedirs``
+#: call themselves once a level, and Python's recursion limit is 1000 (the path, 2.4 kB, is within Linux's 4096).
+DEEP_LEVELS = 1200
+
+
+def test_an_output_many_levels_deep_is_written(tmp_path, monkeypatch):
+    """Class 3, round 30: ``mdr-events simulate --out d/d/.../d`` (1000 new levels) ran the simulation, then ended in
+    ``RecursionError`` (exit 3) creating the directory: ``io.paths.make_directories`` makes them one by one."""
+    monkeypatch.chdir(tmp_path)
+    result = me.phase_diagram(CONTACT, scenario="A", alpha=[10.0, 20.0])
+    deep = "d/" * DEEP_LEVELS + "diagram.nc"
+    me.write_netcdf(result, deep)
+    assert (tmp_path / deep).is_file()
+
+
+def test_a_cache_many_levels_deep_is_stored(tmp_path):
+    """The caches' store (``$MDR_EVENTS_CACHE_DIR`` any depth) likewise: it swallowed an ``OSError`` but not the
+    ``RecursionError``, which ended the derivation that asked for it."""
+    from mdr_events.theory.cache_files import store_cached
+
+    path = tmp_path.joinpath(*["c"] * DEEP_LEVELS, "relations.pickle")
+    store_cached(path, lambda stream: stream.write(b"cached"))
+    assert path.read_bytes() == b"cached"
+
+
+def test_an_output_directory_beyond_a_path_s_length_is_refused_before_the_run(capsys, tmp_path, monkeypatch):
+    """Class 5, round 30: an output directory whose path is longer than a path may be (18 levels of 240 bytes: 4.3 kB)
+    was accepted, the run computed (12 s of a simulation), then refused at the write ("File name too long"). It is
+    refused with the verb's options, the bound stated."""
+    monkeypatch.chdir(tmp_path)
+    out = "/".join(["f" * 240] * 18)
+    message = cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "20", "--out", out])
+    assert "--out" in message and "3839" in message and "4096" in message, message
+    message = one_line_naming(lambda: me.write_netcdf(me.phase_diagram(CONTACT, alpha=[20.0]), out + "/x.nc"), "path")
+    assert "3839" in message
+

@@ -40,7 +40,7 @@ from mdr_events.contact import Contact
 from mdr_events.io import netcdf3
 from mdr_events.io.paths import (ALLOWED_FILE, ALLOWED_PATH, TEMPORARY_MARKER, check_file_path,  # noqa: F401 - as before
                                  check_output_file, check_output_stem, input_file_problem, is_temporary_name,
-                                 prepare_output_directory)
+                                 make_directories, prepare_output_directory)
 from mdr_events.validation import shown, shown_path
 
 try:  # POSIX: a writer locks its temporary file, so that another process never takes it for stale
@@ -189,7 +189,7 @@ def _signals_held():
 def _prepared_target(path: str | os.PathLike) -> Path:
     target = check_output_file("path", path)
     try:
-        target.parent.mkdir(parents=True, exist_ok=True)
+        make_directories(target.parent)
     except OSError as error:  # a race, or a file system that refuses (a read-only mount, /proc)
         raise ValueError(f"path={shown_path(path, quoted=True)} is not allowed (its directory cannot be created: "
                          f"{error.strerror}); allowed: {ALLOWED_FILE}") from None
