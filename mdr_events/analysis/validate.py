@@ -19,7 +19,7 @@ from typing import Any, Callable, Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.analysis.reports import (LEFT_OUT_BOUND, VALIDATION_CONTENT, EventTimes, Verdict,
+from mdr_events.analysis.reports import (LEFT_OUT_BOUND, VALIDATION_CONTENT, EventTimes, ValidationMeasures, Verdict,
                                         validation_failures)
 from mdr_events.analysis.samples import (COMPARED, CONTACT_INDICATORS, FULL_SLIP_SHARE, LEFT_OUT_CODES, UNITS,
                                         VALIDATED_EVENTS, candidate_events, check_run_covers_the_contact,
@@ -281,7 +281,8 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     coords = {"time": ("time", samples.times, {"units": "s", "long_name": "time from first contact"}),
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
-    failures = validation_failures(present, max_errors, differs, left_out_errors, tolerance, corner, events, change)
+    failures = validation_failures(ValidationMeasures(present, max_errors, differs, left_out_errors, corner, change,
+                                                      events), tolerance)
     verdict = Verdict.FAIL if failures else Verdict.PASS
     read, model = samples.read, job.model
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
