@@ -5,8 +5,11 @@ note)."""
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
 import pytest
+import xarray as xr
 
 import mdr_events as me
 from mdr_events.io.candidates import read_profile_table
@@ -161,3 +164,63 @@ def test_an_output_directory_beyond_a_path_s_length_is_refused_before_the_run(ca
     message = one_line_naming(lambda: me.write_netcdf(me.phase_diagram(CONTACT, alpha=[20.0]), out + "/x.nc"), "path")
     assert "3839" in message
 
+
+#: Scenario B+'s deepest point, twice the paper's d_max (m).
+FINAL_DEPTH = 6e-4
+
+
+class _Depth(float):
+    """A user's subclass of ``float``."""
+
+
+def _b_plus_angle(indenter):
+    """Scenario B+'s critical angle of ``final_depth`` on ``indenter`` (``None``: the paper's paraboloid, by
+    ``critical_angle``; a power law or a flat punch by ``power_law.critical_angle_B_indentation``)."""
+    if indenter is None:
+        return lambda final_depth: me.critical_angle(CONTACT, "B+", final_depth=final_depth)
+    return lambda final_depth: me.power_law.critical_angle_B_indentation(indenter, me.Parameters.paper(),
+                                                                          final_depth=final_depth)
+
+
+@pytest.mark.parametrize("indenter", [None, me.PowerLaw(2.0e3, 1.5), me.FlatPunch(1e-3)],
+                         ids=["paraboloid", "power law", "flat punch"])
+@pytest.mark.parametrize("form", [np.float32, Fraction, _Depth, np.int64], ids=["np.float32", "Fraction", "float subclass",
+                                                                             "np.int64"])
+def test_final_depth_is_any_real_number(indenter, form):
+    """Class 5, round 30: ``critical_angle(contact, "B+", final_depth=...)`` took a ``float`` or an ``int`` alone
+    (``isinstance(final, (int, float))``) and refused ``np.float32(6e-4)`` or ``Fraction(3, 5000)``, which
+    ``Scenario(final_depth=...)`` and every other depth take; now read by ``check_real``: the angle of the float."""
+    angle = _b_plus_angle(indenter)
+    value = form(3 if form is np.int64 else FINAL_DEPTH) if form is not Fraction else Fraction(3, 5000)
+    deepest = float(value)
+    try:  # (3 m lies beyond what some indenters reach: refused as the float is, by name)
+        expected = angle(deepest)
+    except ValueError:
+        one_line_naming(lambda: angle(value), "final_depth")
+        return
+    assert angle(value) == expected
+
+
+@pytest.mark.parametrize("indenter", [None, me.PowerLaw(2.0e3, 1.5), me.FlatPunch(1e-3)],
+                         ids=["paraboloid", "power law", "flat punch"])
+@pytest.mark.parametrize("value", [10**400, -10**400, True, np.bool_(True), "6e-4"],
+                         ids=["huge int", "-huge int", "True", "np.True_", "str"])
+def test_final_depth_that_is_no_depth_is_refused_by_its_name(indenter, value):
+    """``final_depth=10**400`` raised ``OverflowError: int too large to convert to float`` (an internal error, class
+    3) and ``final_depth=True`` was refused as ``depth=True``, another argument's name: one line naming
+    ``final_depth``."""
+    angle = _b_plus_angle(indenter)
+    one_line_naming(lambda: angle(value), "final_depth")
+
+
+def test_cross_check_takes_the_spacing_and_steps_discrete_takes(tmp_path):
+    """Class 3/5, round 30: ``cross_check(..., dx=Fraction(1, 500000))`` ended in ``TypeError: unsupported format
+    string passed to Fraction.__format__`` (its labels wrote ``dx`` as given) and ``n_steps=None``, which ``Discrete``
+    takes as its default step, in "attribute value None ... is not netCDF-safe" at the end of both runs: the
+    values are the ones ``Discrete`` runs (a float ``dx``; no ``n_steps`` attribute without one)."""
+    plain = me.cross_check(CONTACT, "A", alpha=[20.0], dx=2e-6, n_steps=2000)
+    exact = me.cross_check(CONTACT, "A", alpha=[20.0], dx=Fraction(1, 500000), n_steps=np.int64(2000))
+    xr.testing.assert_identical(exact, plain)
+    default = me.cross_check(CONTACT, "A", alpha=[20.0], n_steps=None)
+    assert "n_steps" not in default.attrs and np.isfinite(default["d_crit_discrete"].values).all()
+    me.write_netcdf(default, tmp_path / "default.nc")

@@ -138,7 +138,9 @@ def cross_check(contact: ContactLike, scenario: str = "A", alpha=(10.0, 15.0, 20
     alpha : sequence of float
         Path angles in degrees.
     dx, n_steps : float, int
-        The discrete model's spring spacing (m) and number of time steps.
+        The discrete model's spring spacing (m) and number of time steps (``None``: the discrete method's default
+        step, and no attribute ``n_steps``); any real number and integer :class:`~mdr_events.Discrete` takes, kept
+        as the floats and integers it runs.
     d_max : float, optional
         With a Contact: the turning depth of the scenario (m; default the paper's 0.3 mm).
 
@@ -192,5 +194,5 @@ def cross_check(contact: ContactLike, scenario: str = "A", alpha=(10.0, 15.0, 20
         "found_once_at_phase_end": at_end,
         "disagree": flag,
     }
-    return stamp(_cross_check_dataset(angles, values, scenario, dx), params, scenario=scenario, dx=dx,
-                 n_steps=n_steps, content=CROSS_CHECK_CONTENT)
+    return stamp(_cross_check_dataset(angles, values, scenario, dx), params, scenario=scenario, dx=dx, **steps,
+                 content=CROSS_CHECK_CONTENT)

@@ -11,7 +11,7 @@ import numpy as np
 from mdr_events.theory import symbolic
 from mdr_events.validation import SCALE_MAX, check_real, real_array, shown
 
-__all__ = ["NONNEGATIVE", "ResultOverflowError", "representable_result"]
+__all__ = ["NONNEGATIVE", "ResultOverflowError", "representable_result", "final_depth_of"]
 
 _Result = TypeVar("_Result")
 
@@ -23,6 +23,17 @@ def _rel(key: str):
 #: Arguments of the closed forms that are lengths or works of their physics, never negative (the parameters refuse a
 #: negative work of adhesion; a negative radius gave a negative critical shift and a positive pull-off force).
 NONNEGATIVE = ("contact_radius", "work_of_adhesion", "amplitude")
+
+
+def final_depth_of(params, final_depth) -> float:
+    """Scenario B+'s deepest point: ``final_depth``, default ``2 d_max`` of ``params``; else ``ValueError`` naming it
+    unless a finite depth beyond ``d_max`` (any real number, as :func:`~mdr_events.validation.check_real` reads it:
+    ``np.float32``, a 0-d array, a ``Fraction``, as ``Scenario(final_depth=...)`` takes them; an integer beyond a
+    double refused, not an ``OverflowError``; a bool refused by its own name)."""
+    if final_depth is None:
+        return 2.0 * params.d_max
+    return check_real("final_depth", final_depth, f"a finite depth > d_max = {params.d_max!r} m",
+                      lambda value: value > params.d_max)
 
 
 def check_work(work_of_adhesion) -> float:
