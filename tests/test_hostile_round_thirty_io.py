@@ -224,3 +224,24 @@ def test_cross_check_takes_the_spacing_and_steps_discrete_takes(tmp_path):
     default = me.cross_check(CONTACT, "A", alpha=[20.0], n_steps=None)
     assert "n_steps" not in default.attrs and np.isfinite(default["d_crit_discrete"].values).all()
     me.write_netcdf(default, tmp_path / "default.nc")
+
+
+@pytest.mark.parametrize("argv, unknown", [
+    (["simulate", "--scen", "A", "--alpha", "20", "--out", "o"], "--scen"),
+    (["simulate", "--scenari=A", "--alpha", "20"], "--scenari"),
+    (["validate", "run.csv", "--scenario", "A", "--alpha", "20", "--ou", "o"], "--ou"),
+    (["fit", "--fre", "tau0", "--scenario", "A", "--alpha", "20", "--out", "o", "run.csv"], "--fre"),
+], ids=["--scen", "--scenari=", "--ou", "--fre"])
+def test_an_abbreviated_required_option_is_named(capsys, tmp_path, monkeypatch, argv, unknown):
+    """Class 7, round 30: options are not abbreviated (``allow_abbrev=False``), and a required one written short
+    (``--scen A``) was answered only "the following arguments are required: --scenario", which the user believes
+    given; the line now names the word that is no option and says how options are written."""
+    monkeypatch.chdir(tmp_path)
+    message = cli_one_line(capsys, argv)
+    assert "required" in message and f"({unknown} is no option of this command" in message, message
+
+
+def test_a_named_unknown_option_is_not_named_twice(capsys):
+    """An unknown option argparse names itself (``--methd``: unrecognized) gets no second mention."""
+    message = cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "20", "--out", "o", "--methd", "x"])
+    assert message.count("--methd") == 1 and "is no option" not in message, message
