@@ -5,6 +5,7 @@ note)."""
 
 from __future__ import annotations
 
+import warnings
 from fractions import Fraction
 
 import numpy as np
@@ -245,3 +246,36 @@ def test_a_named_unknown_option_is_not_named_twice(capsys):
     """An unknown option argparse names itself (``--methd``: unrecognized) gets no second mention."""
     message = cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "20", "--out", "o", "--methd", "x"])
     assert message.count("--methd") == 1 and "is no option" not in message, message
+
+
+#: Contact radii and depths (m) of the closed forms' arrays.
+LENGTHS = [1e-4, 2e-4]
+
+
+@pytest.mark.parametrize("call", [
+    lambda value: me.critical_shift(value, CONTACT),
+    lambda value: me.jkr_contact_radius(value, CONTACT, 0.05),
+    lambda value: me.jkr_normal_force(value, CONTACT, 0.05),
+    lambda value: me.fretting_dissipated_energy(value, 1e-6, CONTACT),
+], ids=["critical_shift", "jkr_contact_radius", "jkr_normal_force", "fretting_dissipated_energy"])
+def test_a_closed_form_reads_float32_as_its_float64(call):
+    """Class 3, round 30: a float32 array went to the closed forms as given: its check against the bound 1.3e154
+    cast the bound to float32 (NumPy's "RuntimeWarning: overflow encountered in cast") and the result was computed in
+    float32. It is read as the float64 array of its values, as a list or an int array is: the same result."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        given = call(np.array(LENGTHS, dtype=np.float32))
+    expected = call(np.array(LENGTHS, dtype=np.float32).astype(np.float64))
+    assert given.dtype == np.float64 and np.array_equal(given, expected)
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda value: me.critical_shift(value, CONTACT), "contact_radius"),
+    (lambda value: me.jkr_contact_radius(value, CONTACT, 0.05), "depth"),
+    (lambda value: me.jkr_normal_force(value, CONTACT, 0.05), "contact_radius"),
+], ids=["critical_shift", "jkr_contact_radius", "jkr_normal_force"])
+def test_a_closed_form_refuses_masked_entries(call, named):
+    """A masked array with masked entries went past ``real_array``'s refusal (a float array was taken as given):
+    ``jkr_contact_radius`` read the value under the mask as given, ``critical_shift`` returned a masked array; refused
+    by name, as every other argument refuses it."""
+    one_line_naming(lambda: call(np.ma.masked_array(LENGTHS, mask=[False, True])), named, errors=(TypeError,))
