@@ -5,6 +5,7 @@ note)."""
 
 from __future__ import annotations
 
+import os
 import warnings
 from fractions import Fraction
 
@@ -134,14 +135,36 @@ def test_the_command_line_names_a_long_path_short(capsys, tmp_path, monkeypatch,
 DEEP_LEVELS = 1200
 
 
+def _remove_deep(top) -> None:
+    """Remove the tree at ``top`` without recursion: pytest's own clean-up of its temporary directories
+    (``shutil.rmtree``) recurses once a level and ended a later session in ``RecursionError`` on these trees."""
+    stack = [str(top)]
+    while stack:
+        below = []
+        with os.scandir(stack[-1]) as entries:
+            for entry in entries:
+                if entry.is_dir(follow_symlinks=False):
+                    below.append(entry.path)
+                else:
+                    os.unlink(entry.path)
+        if below:
+            stack.extend(below)
+        else:
+            os.rmdir(stack.pop())
+
+
 def test_an_output_many_levels_deep_is_written(tmp_path, monkeypatch):
     """Class 3, round 30: ``mdr-events simulate --out d/d/.../d`` (1000 new levels) ran the simulation, then ended in
     ``RecursionError`` (exit 3) creating the directory: ``io.paths.make_directories`` makes them one by one."""
     monkeypatch.chdir(tmp_path)
     result = me.phase_diagram(CONTACT, scenario="A", alpha=[10.0, 20.0])
     deep = "d/" * DEEP_LEVELS + "diagram.nc"
-    me.write_netcdf(result, deep)
-    assert (tmp_path / deep).is_file()
+    try:
+        me.write_netcdf(result, deep)
+        assert (tmp_path / deep).is_file()
+    finally:
+        if (tmp_path / "d").exists():
+            _remove_deep(tmp_path / "d")
 
 
 def test_a_cache_many_levels_deep_is_stored(tmp_path):
@@ -150,8 +173,12 @@ def test_a_cache_many_levels_deep_is_stored(tmp_path):
     from mdr_events.theory.cache_files import store_cached
 
     path = tmp_path.joinpath(*["c"] * DEEP_LEVELS, "relations.pickle")
-    store_cached(path, lambda stream: stream.write(b"cached"))
-    assert path.read_bytes() == b"cached"
+    try:
+        store_cached(path, lambda stream: stream.write(b"cached"))
+        assert path.read_bytes() == b"cached"
+    finally:
+        if (tmp_path / "c").exists():
+            _remove_deep(tmp_path / "c")
 
 
 def test_an_output_directory_beyond_a_path_s_length_is_refused_before_the_run(capsys, tmp_path, monkeypatch):
