@@ -329,7 +329,7 @@ def from_preset(preset: str, **overrides: float) -> tuple[Parameters, dict[str, 
     ``parameters_preset`` (the preset's name) and ``parameters_from_preset`` (the fields whose values
     came from the preset rather than from the user, comma-separated; "" if the user gave all).
     """
-    check_choice("preset", preset, PRESETS)
+    preset = check_choice("preset", preset, PRESETS)
     params = Parameters.paper(R=PRESETS[preset])
     params = params.replace(**overrides) if overrides else params
     taken = [name for name in PARAMETER_UNITS if name not in overrides]

@@ -9,6 +9,7 @@ from __future__ import annotations
 import decimal
 import functools
 import math
+import os
 import sys
 import numbers
 from collections.abc import Mapping
@@ -16,7 +17,7 @@ from typing import Any, Callable, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "cut_text", "validate_alpha", "check_callback", "reads_attrs", "allowed_bound"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "as_name", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "shown_path", "PATH_CHARACTERS", "cut_text", "validate_alpha", "check_callback", "reads_attrs", "allowed_bound"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -39,13 +40,33 @@ def shown(value: Any) -> str:
     return cut_text(" ".join(repr(value).split()))
 
 
+def _printable(text: str) -> str:
+    """``text`` with its control characters written as ``repr`` writes them (one line, no raw escape sequence)."""
+    return text if text.isprintable() else "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+
+
 def shown_text(text: str, characters: int = SHOWN_CHARACTERS) -> str:
     """A name written bare in a message (a table's, a file's stem, a column's): its control characters written as
     ``repr`` writes them, cut to ``characters`` characters (:func:`shown` quotes it: a value, not a name)."""
-    text = str(text)
-    if not text.isprintable():
-        text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
-    return cut_text(text, characters)
+    return cut_text(_printable(str(text)), characters)
+
+
+#: Characters of a file's path shown in a message: a deep path is shown whole; a text given where a path goes (a
+#: CSV file's content, 40 kB) is cut in its middle.
+PATH_CHARACTERS = 200
+#: Characters of the start of a path cut by :func:`shown_path` (the rest of :data:`PATH_CHARACTERS` is its end).
+PATH_HEAD_CHARACTERS = 60
+
+
+def shown_path(path: Any, quoted: bool = False) -> str:
+    """A file's path as a message names it, on one line: its text (``bytes`` decoded as the file system does) with
+    its control characters written as ``repr`` writes them (or, ``quoted``, its ``repr``), and one longer than
+    :data:`PATH_CHARACTERS` cut in its middle, its start and its end (the file's name) kept around ``...``."""
+    text = os.fsdecode(path) if isinstance(path, (str, bytes, os.PathLike)) else str(path)
+    text = repr(text) if quoted else _printable(text)
+    if len(text) <= PATH_CHARACTERS:
+        return text
+    return text[:PATH_HEAD_CHARACTERS] + "..." + text[len(text) - (PATH_CHARACTERS - PATH_HEAD_CHARACTERS - 3):]
 
 
 #: What a number written as text may be (an option's value, a string of a study file, a CSV cell): :func:`plain_number`.
@@ -260,24 +281,40 @@ def check_output_times(name: str, value: Any) -> np.ndarray:
     return times
 
 
-def check_choice(name: str, value: Any, allowed: Collection) -> None:
-    """Raise ``ValueError`` unless ``value`` is one of ``allowed``.
+def as_name(value: Any) -> Any:
+    """``value`` as a name: a 0-d array of text (``np.array("A")``, what indexing a NumPy array of names gives) read as
+    its ``str``, and a subclass of ``str`` (``np.str_``, a user's) as the plain ``str`` it spells; anything else as it
+    is (refused by the check that reads it)."""
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind == "U":
+        return str(value[()])
+    return str(value) if isinstance(value, str) else value
+
+
+def check_choice(name: str, value: Any, allowed: Collection) -> str:
+    """The name ``value`` gives (:func:`as_name`) if it is one of ``allowed``, else ``ValueError``.
 
     Parameters
     ----------
     name : str
         The argument's name, as the user wrote it.
     value : object
-        The value given.
+        The value given: a ``str`` (or a subclass of it) or a 0-d array of text.
     allowed : collection
-        The allowed values, listed (as their ``repr``) in the message.
+        The allowed names, listed (as their ``repr``) in the message.
+
+    Returns
+    -------
+    str
+        The name, a plain ``str`` (what the caller keeps and writes in a file's attributes).
     """
+    chosen = as_name(value)
     try:  # (an array compared with each name answers with an array, whose truth is ambiguous)
-        known = not isinstance(value, np.ndarray) and value in allowed
+        known = not isinstance(chosen, np.ndarray) and chosen in allowed
     except (TypeError, ValueError):  # (a list or a dict: unhashable, in no set or mapping of names; a DataFrame)
         known = False
     if not known:
         raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {', '.join(map(repr, allowed))}")
+    return chosen
 
 
 def check_flag(name: str, value: Any) -> None:

@@ -138,7 +138,9 @@ def cross_check(contact: ContactLike, scenario: str = "A", alpha=(10.0, 15.0, 20
     alpha : sequence of float
         Path angles in degrees.
     dx, n_steps : float, int
-        The discrete model's spring spacing (m) and number of time steps.
+        The discrete model's spring spacing (m) and number of time steps (``None``: the discrete method's default
+        step, and no attribute ``n_steps``); any real number and integer :class:`~mdr_events.Discrete` takes, kept
+        as the floats and integers it runs.
     d_max : float, optional
         With a Contact: the turning depth of the scenario (m; default the paper's 0.3 mm).
 
@@ -148,8 +150,10 @@ def cross_check(contact: ContactLike, scenario: str = "A", alpha=(10.0, 15.0, 20
         The variables of :data:`CROSS_CHECK_VARIABLES` along ``alpha`` (see the module's docstring).
     """
     params = paper_parameters(contact, "cross_check", d_max)
-    check_choice("scenario", scenario, analytic.SCENARIOS)
-    methods = Continuum(), Discrete(dx=dx, n_steps=n_steps)
+    scenario = check_choice("scenario", scenario, analytic.SCENARIOS)
+    discrete_method = Discrete(dx=dx, n_steps=n_steps)
+    dx, steps = discrete_method.dx, {} if n_steps is None else {"n_steps": discrete_method.n_steps}  # (as run: floats)
+    methods = Continuum(), discrete_method
     for method in methods:  # (the angles counted as the runs count their cases, before they are read: 1e7 took 1.4 GB)
         method.check_case_count(values_in(alpha), DEFAULT_LIMITS)
     angles = np.atleast_1d(validate_alpha(alpha))
@@ -190,5 +194,5 @@ def cross_check(contact: ContactLike, scenario: str = "A", alpha=(10.0, 15.0, 20
         "found_once_at_phase_end": at_end,
         "disagree": flag,
     }
-    return stamp(_cross_check_dataset(angles, values, scenario, dx), params, scenario=scenario, dx=dx,
-                 n_steps=n_steps, content=CROSS_CHECK_CONTENT)
+    return stamp(_cross_check_dataset(angles, values, scenario, dx), params, scenario=scenario, dx=dx, **steps,
+                 content=CROSS_CHECK_CONTENT)

@@ -411,10 +411,10 @@ def _problem(job: FitJob, read: Candidate, nominal: Path, free: Sequence[str], l
                       job.model.contact.layer)
     samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
     if samples <= len(free_set.names):
-        raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
+        raise ValueError(f"{read.where}: {samples} finite samples for {len(free_set.names)} free parameters; "
                          "allowed: more samples than free parameters")
     if all(not np.any(np.nan_to_num(values)) for values in measurement.values.values()):
-        raise ValueError(f"{read.source}: every measured {', '.join(measurement.values)} is 0: nothing to fit (the "
+        raise ValueError(f"{read.where}: every measured {', '.join(measurement.values)} is 0: nothing to fit (the "
                          "parameters would run off to where the model vanishes); allowed: curves of a contact")
     return problem
 

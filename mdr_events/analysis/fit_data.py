@@ -105,11 +105,11 @@ def measurement_of(read: Candidate, path: Path, time_origin: Any,
     """
     values = {name: read.quantities[name] for name in FITTED_QUANTITIES if name in read.quantities}
     if not values:
-        raise ValueError(f"{read.source}: none of {', '.join(FITTED_QUANTITIES)} to fit; found: "
+        raise ValueError(f"{read.where}: none of {', '.join(FITTED_QUANTITIES)} to fit; found: "
                          f"{', '.join(read.quantities)}")
     for name, series in values.items():
         if not np.any(np.isfinite(series)):
-            raise ValueError(f"{read.source}: {name} has no finite sample; allowed: measured values (nan marks a "
+            raise ValueError(f"{read.where}: {name} has no finite sample; allowed: measured values (nan marks a "
                              "missing sample)")
     noise = check_mapping("noise", noise, "{'normal_force': 2e-3}")
     sigma, given = {}, {}

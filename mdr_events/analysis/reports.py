@@ -17,7 +17,7 @@ from typing import ClassVar, NamedTuple, Sequence
 import numpy as np
 import xarray as xr
 
-__all__ = ["Verdict", "ConvergenceVerdict", "ValidationReport", "ConvergenceReport", "validation_failures", "EventTimes",
+__all__ = ["Verdict", "ConvergenceVerdict", "ValidationReport", "ConvergenceReport", "validation_failures", "ValidationMeasures", "EventTimes",
            "LEFT_OUT_BOUND", "VALIDATION_CONTENT", "check_content", "CONVERGENCE_STUDY_CONTENT"]
 
 #: The ``content`` attribute of a validation's and of a convergence study's dataset.
@@ -76,16 +76,34 @@ def _event_failures(events: EventTimes, tolerance: float) -> list[str]:
     return failures
 
 
-def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], contact_differs: float,
-                        left_out_errors: Sequence[float], tolerance: float,
-                        corner_excess: Sequence[float] = (), events: EventTimes | None = None,
-                        contact_change_excess: Sequence[float] = ()) -> list[str]:
-    """What fails a validation, in words (none: it passes): no quantity compared; a quantity's max error above
-    ``tolerance`` (or not a number); the share of the exact contact's time in contact in one run only above
-    ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact value; a sample at a
-    corner or a reversal farther than ``tolerance`` beyond the exact change beside it, or one where the contact
-    differs or is made farther than ``tolerance`` beyond the exact values around it and 0; an event's time off by
-    more than ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`)."""
+class ValidationMeasures(NamedTuple):
+    """What a validation measured, which :func:`validation_failures` judges: each sequence has one value per quantity
+    compared, in the order of ``quantities`` (shares of that quantity's range); the others are the run's."""
+
+    #: the quantities compared (names of :data:`~mdr_events.analysis.samples.COMPARED`)
+    quantities: Sequence[str]
+    #: each quantity's largest error over the samples compared
+    max_errors: Sequence[float]
+    #: the share of the exact contact's time in contact in one run only or not sampled (``nan``: not shown)
+    contact_differs: float
+    #: each quantity's largest distance of a sample left out from the exact value (ranges)
+    left_out_errors: Sequence[float]
+    #: each quantity's largest excess of a sample at a corner or a reversal beyond the exact change there
+    corner_excess: Sequence[float] = ()
+    #: each quantity's largest excess of a sample where the contact differs or is made beyond the exact values
+    contact_change_excess: Sequence[float] = ()
+    #: the events compared (``None``: a report written before events were compared)
+    events: EventTimes | None = None
+
+
+def validation_failures(measures: ValidationMeasures, tolerance: float) -> list[str]:
+    """What fails a validation of ``measures`` at ``tolerance``, in words (none: it passes): no quantity compared; a
+    quantity's max error above ``tolerance`` (or not a number); the share of the exact contact's time in contact in
+    one run only above ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact
+    value; a sample at a corner or a reversal farther than ``tolerance`` beyond the exact change beside it, or one
+    where the contact differs or is made farther than ``tolerance`` beyond the exact values around it and 0; an
+    event's time off by more than ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`)."""
+    quantities, max_errors, contact_differs, left_out_errors, corner_excess, contact_change_excess, events = measures
     if not len(quantities):
         return ["no quantity compared"]
     failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}"
@@ -179,8 +197,8 @@ class ValidationReport(_Report):
         events = EventTimes([str(name) for name in data["event"].values], data["event_time_exact"].values,
                             data["event_time_candidate"].values, data["event_time_relative_error"].values) \
             if "event_time_relative_error" in data else None  # (files written before compared no events)
-        return validation_failures(quantities, data["max_error"].values, share, left_out, self.tolerance, corner,
-                                   events, change)
+        return validation_failures(ValidationMeasures(quantities, data["max_error"].values, share, left_out, corner,
+                                                      change, events), self.tolerance)
 
 
 @dataclass(frozen=True)

@@ -177,7 +177,7 @@ def check_run_covers_the_contact(read: Candidate, times: np.ndarray, contact: np
                 not _contact_ends_within_a_step(solution, times[:last + 1]):
             where = (f"ends at {times[last]:.6g} s from first contact" if last == len(times) - 1 else
                      f"is nan from row {last + 2} on (after {times[last]:.6g} s from first contact)")
-            raise ValueError(f"{read.source}: column {column!r} {where}, in contact, while the exact contact lasts "
+            raise ValueError(f"{read.where}: column {column!r} {where}, in contact, while the exact contact lasts "
                              "beyond its next sample; allowed: values that cover the contact up to the run's last "
                              f"sample in contact (the exact run lasts {solution.end_time:.6g} s)")
 

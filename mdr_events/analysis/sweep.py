@@ -107,8 +107,7 @@ class SweepOutput:
             raise TypeError(f"quantities={quantities!r} (str) is not allowed; allowed: a sequence of names, e.g. "
                             f"({quantities!r},)")
         wanted = tuple(QUANTITIES) if quantities is None else tuple(quantities)
-        for name in wanted:
-            check_choice("quantities", name, QUANTITIES)
+        wanted = tuple(check_choice("quantities", name, QUANTITIES) for name in wanted)
         if not wanted or len(set(wanted)) != len(wanted):
             raise ValueError(f"quantities={shown(quantities)} is not allowed; allowed: distinct names from "
                              f"{', '.join(QUANTITIES)}")

@@ -18,6 +18,7 @@ from mdr_events._version import __version__
 from mdr_events.analysis.sweep_runs import ERROR_CHARACTERS, HISTORY_QUANTITIES, QUANTITIES, ChunkResult
 from mdr_events.io.files import check_output_file, prepare_output_directory
 from mdr_events.validation import shown, shown_text
+from mdr_events.io.paths import make_directories
 
 __all__ = ["Store", "run_variables", "BYTES_PER_STORE_RUN", "BYTES_PER_SIGNATURE_RUN", "BYTES_PER_SIGNATURE_VALUE",
            "store_bytes"]
@@ -149,7 +150,7 @@ def _locked(path: str):
     name = os.path.join(os.path.dirname(os.path.abspath(path)), f".{os.path.basename(os.path.normpath(path))}"
                                                                   f"{LOCK_SUFFIX}")
     try:  # (the store's directory checked before, by prepare_output_directory)
-        os.makedirs(os.path.dirname(name), exist_ok=True)
+        make_directories(os.path.dirname(name))
         handle = open(name, "a")  # noqa: SIM115 - held open while the sweep runs; closed by Store.close
     except OSError as error:
         raise ValueError(f"store={path!r} cannot be locked ({error.strerror or error}: {name!r}); allowed: a store in "

@@ -19,7 +19,7 @@ from typing import Any, Callable, Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.analysis.reports import (LEFT_OUT_BOUND, VALIDATION_CONTENT, EventTimes, Verdict,
+from mdr_events.analysis.reports import (LEFT_OUT_BOUND, VALIDATION_CONTENT, EventTimes, ValidationMeasures, Verdict,
                                         validation_failures)
 from mdr_events.analysis.samples import (COMPARED, CONTACT_INDICATORS, FULL_SLIP_SHARE, LEFT_OUT_CODES, UNITS,
                                         VALIDATED_EVENTS, candidate_events, check_run_covers_the_contact,
@@ -288,7 +288,8 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     coords = {"time": ("time", samples.times, {"units": "s", "long_name": "time from first contact"}),
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
-    failures = validation_failures(present, max_errors, differs, left_out_errors, tolerance, corner, events, change)
+    failures = validation_failures(ValidationMeasures(present, max_errors, differs, left_out_errors, corner, change,
+                                                      events), tolerance)
     verdict = Verdict.FAIL if failures else Verdict.PASS
     read, model = samples.read, job.model
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
@@ -324,10 +325,10 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress, tolerance:
     contact where it is not 0 and where the exact one is within ``tolerance`` of 0:
     :func:`~mdr_events.analysis.samples.contact_of_tangential_force`)."""
     read = read_candidate(candidate, job.names, job.units, limits, select=job.select, progress=progress)
-    limits.check(f"validating {read.time.size} samples of {read.source}",
+    limits.check(f"validating {read.time.size} samples of {read.where}",
                  memory=BYTES_PER_VALIDATED_SAMPLE * read.time.size)
     if not any(name in COMPARED for name in read.quantities):
-        raise ValueError(f"{read.source}: none of {', '.join(COMPARED)} found (columns read: "
+        raise ValueError(f"{read.where}: none of {', '.join(COMPARED)} found (columns read: "
                          f"{', '.join(read.quantities)}); allowed: at least one of them (the sliding fraction alone "
                          "serves only the events)")
     check_run_is_finite(read, in_contact(read.quantities), job.names)
@@ -337,12 +338,12 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress, tolerance:
     quantities = dict(read.quantities)
     contact = in_contact(quantities)
     if not np.any(contact):
-        raise ValueError(f"{read.source}: the candidate never touches (no sample in contact); allowed: a run "
+        raise ValueError(f"{read.where}: the candidate never touches (no sample in contact); allowed: a run "
                          "that makes contact")
     check_run_covers_the_contact(read, times, contact, solution, job.names)
     if not any(name in quantities for name in CONTACT_INDICATORS):
         contact = contact_of_tangential_force(contact, quantities["tangential_force"], exact, tolerance)
-    codes, compared = compared_samples(read.source, times, exact, quantities, contact, solution)
+    codes, compared = compared_samples(read.where, times, exact, quantities, contact, solution)
     return _Samples(read, times, solution, exact, quantities, contact, codes, compared)
 
 

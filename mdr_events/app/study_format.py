@@ -17,7 +17,7 @@ from typing import Any, Callable
 from mdr_events.io.files import check_file_path, check_output_stem
 from mdr_events.limits import LIMIT_UNITS, in_study
 from mdr_events.parameters import PARAMETER_UNITS
-from mdr_events.validation import shown, shown_text
+from mdr_events.validation import shown, shown_path, shown_text
 
 __all__ = ["StudyError", "SCHEMA", "REQUIRED_TABLES", "MAX_TOML_BYTES", "check_table", "check_tables", "check_computation",
            "measured_case", "read_toml", "one_table"]
@@ -226,7 +226,7 @@ def read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
     file if it is missing, a directory, unreadable, not UTF-8 text or not valid TOML.
     """
     source = check_file_path("path", path, f"a str or os.PathLike naming a {what} (.toml)")
-    where = os.fspath(source)
+    where = shown_path(source)
     allowed = f"allowed: a {what}, TOML in UTF-8 text"
     if os.path.exists(source) and not os.path.isdir(source) and not os.path.isfile(source):
         raise StudyError(f"{where} is not a regular file (a device, FIFO or socket); {allowed}")
@@ -258,7 +258,7 @@ def read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
 
 def one_table(path: str | os.PathLike, table: str, what: str) -> tuple[dict[str, Any], str]:
     document, source = read_toml(path, what)
-    where = os.fspath(source)
+    where = shown_path(source)
     if table not in document:
         raise StudyError(f"{where}: no [{table}] table; tables found: "
                          f"{', '.join(f'[{name}]' for name in document) or 'none'}; allowed: a TOML file with a "

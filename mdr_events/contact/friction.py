@@ -71,7 +71,7 @@ class FrictionLaw:
     tau0: float | None = None
 
     def __post_init__(self) -> None:
-        check_choice("FrictionLaw.law", self.law, FRICTION_LAWS)
+        object.__setattr__(self, "law", check_choice("FrictionLaw.law", self.law, FRICTION_LAWS))
         if self.tau0 is not None:
             if not self.uses_tau0:
                 raise ValueError(f"tau0={shown(self.tau0)} is not allowed with the friction law {self.law!r} (it has no "

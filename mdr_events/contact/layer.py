@@ -14,7 +14,7 @@ import sys
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from mdr_events.validation import check_real, reads_attrs, shown
+from mdr_events.validation import as_name, check_real, reads_attrs, shown
 
 __all__ = ["Layer", "LayerBase", "HALF_SPACE", "NU_RANGE"]
 
@@ -50,9 +50,9 @@ def _as_base(value: Any) -> LayerBase:
     """``value`` as a :class:`LayerBase` (a member or its value's string), else a one-line ``ValueError``."""
     if isinstance(value, LayerBase):
         return value
-    if isinstance(value, str):
+    if isinstance(as_name(value), str):
         for member in LayerBase:
-            if value == member.value:
+            if as_name(value) == member.value:
                 return member
     raise ValueError(f"Layer.base={shown(value)} is not allowed; allowed: {_BASES_ALLOWED}")
 

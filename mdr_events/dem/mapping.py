@@ -95,8 +95,8 @@ class LammpsModel:
     tangential: str = "none"
 
     def __post_init__(self) -> None:
-        check_choice("normal", self.normal, NORMAL_MODELS)
-        check_choice("tangential", self.tangential, TANGENTIAL_MODELS)
+        object.__setattr__(self, "normal", check_choice("normal", self.normal, NORMAL_MODELS))
+        object.__setattr__(self, "tangential", check_choice("tangential", self.tangential, TANGENTIAL_MODELS))
 
     @property
     def adhesive(self) -> bool:

@@ -21,8 +21,8 @@ import xarray as xr
 from mdr_events.io.files import input_file_problem, load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
-from mdr_events.validation import (PLAIN_NUMBER, SCALE_MAX, check_mapping, check_real, plain_number, real_array,
-                                   cut_text, shown, shown_text)
+from mdr_events.validation import (PLAIN_NUMBER, SCALE_MAX, check_mapping, check_real, cut_text, plain_number,
+                                   real_array, shown, shown_path, shown_text)
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "UnnamedColumnError", "read_candidate", "unit_factor",
            "check_run_is_finite", "UNDEFINED_OUT_OF_CONTACT"]
@@ -78,8 +78,13 @@ class Candidate(NamedTuple):
 
     time: np.ndarray
     quantities: dict[str, np.ndarray]
-    source: str  #: where it came from, for messages
+    source: str  #: where it came from: its file's path whole (a report's attribute), or "candidate (Dataset)"
     unused: tuple[str, ...] = ()  #: the candidate's columns that were not read (not named as a quantity)
+
+    @property
+    def where(self) -> str:
+        """The source as a message names it (:func:`~mdr_events.validation.shown_path`: one line, a long path cut)."""
+        return shown_path(self.source)
 
 
 class UnnamedColumnError(ValueError):
@@ -136,6 +141,7 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
     and errors name the file's own line number. A column not in ``read`` (default: every column is read) is named
     with an empty array and its fields are not parsed: any text (a DEM's column of particle labels was refused whole,
     round 28)."""
+    where = shown_path(path)  # (named in its messages: one line, a long path cut)
     rows = max(_line_count(path) - 1, 0)
     line = [0]  # the file's line the reader is at (comments and blank lines counted)
 
@@ -151,24 +157,24 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
             reader = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(first))
             header = [name.strip() for name in next(reader, [])]
             if not header:
-                raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
+                raise ValueError(f"{where}: the file is empty; allowed: a CSV file with a header row")
             repeated = sorted({name for name in header if header.count(name) > 1})
             if repeated:
-                raise ValueError(f"{path}: the header names {', '.join(map(repr, repeated))} more than once; allowed: "
+                raise ValueError(f"{where}: the header names {', '.join(map(repr, repeated))} more than once; allowed: "
                                  "each column's name once")
-            limits.check(f"reading {path} ({rows} rows of {len(header)} columns)", samples=rows,
+            limits.check(f"reading {where} ({rows} rows of {len(header)} columns)", samples=rows,
                          memory=BYTES_PER_CSV_VALUE * rows * len(header))
             columns = {name: array("d") for name in header}
             parsed = [index for index, name in enumerate(header) if read is None or name in read]
             for count, row in enumerate(reader, start=1):
                 if progress is not None and count % PROGRESS_ROWS == 0:
-                    progress(f"reading {path}: {count} of {rows} rows")
-                _read_row(path, line[0], header, row, columns, parsed)
+                    progress(f"reading {where}: {count} of {rows} rows")
+                _read_row(where, line[0], header, row, columns, parsed)
     except UnicodeDecodeError as error:
-        raise ValueError(f"{path}: not UTF-8 text (byte {error.start}: {error.reason}); allowed: a CSV file with a "
+        raise ValueError(f"{where}: not UTF-8 text (byte {error.start}: {error.reason}); allowed: a CSV file with a "
                          "header row (UTF-8 text)") from None
     except csv.Error as error:
-        raise ValueError(f"{path}: not a readable CSV file (line {line[0]}: {error}); allowed: a CSV file with a "
+        raise ValueError(f"{where}: not a readable CSV file (line {line[0]}: {error}); allowed: a CSV file with a "
                          "header row") from None
     return {name: np.frombuffer(values, dtype=float).copy() for name, values in columns.items()}
 
@@ -182,19 +188,19 @@ def _delimiter(header: str) -> str:
     return next((mark for mark in (";", "\t") if mark in header), ",")
 
 
-def _read_row(path: Path, number: int, header: list[str], row: list[str], columns: dict[str, array],
+def _read_row(where: str, number: int, header: list[str], row: list[str], columns: dict[str, array],
               parsed: list[int]) -> None:
     """Append a CSV row's numbers (an empty field: ``nan``) in the columns ``parsed`` (their indices) to ``columns``;
     ``ValueError`` naming the file's line ``number`` where the row is not as long as the header or a field is no
     number."""
     if len(row) != len(header):
-        raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the header")
+        raise ValueError(f"{where}: line {number} has {len(row)} fields; allowed: {len(header)} as in the header")
     for index in parsed:
         name, text = header[index], row[index]
         try:
             columns[name].append(plain_number(text) if text.strip() else math.nan)
         except ValueError:
-            raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number; allowed: "
+            raise ValueError(f"{where}: line {number}, column {name!r}: {text!r} is not a number; allowed: "
                              f"{PLAIN_NUMBER}, or an empty field") from None
 
 
@@ -204,16 +210,18 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
     path = Path(path)
     problem = input_file_problem(path)
     if problem is not None:
-        raise ValueError(f"table={str(path)!r}{problem}; allowed: a CSV file with the columns r and f (m)")
+        raise ValueError(f"table={shown_path(path, quoted=True)}{problem}; allowed: a CSV file with the columns r and "
+                         "f (m)")
     columns = _read_csv(path, read=("r", "f"))
+    where = shown_path(path)
     missing = [name for name in ("r", "f") if name not in columns]
     if missing:
-        raise ValueError(f"{path}: no column {' or '.join(map(repr, missing))} (columns: {columns_listed(columns)}); "
+        raise ValueError(f"{where}: no column {' or '.join(map(repr, missing))} (columns: {columns_listed(columns)}); "
                          "allowed: a header naming the columns r and f (m)")
     try:
         return TabulatedProfile(columns["r"], columns["f"])
     except (ValueError, TypeError) as error:
-        raise ValueError(f"{path}: {error}") from None
+        raise ValueError(f"{where}: {error}") from None
 
 
 def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
@@ -226,13 +234,13 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
         path = Path(candidate)
         problem = input_file_problem(path)
         if problem is not None:
-            raise ValueError(f"candidate={str(candidate)!r}{problem}; allowed: a CSV or netCDF file, a Dataset or a "
-                             "mapping of arrays")
+            raise ValueError(f"candidate={shown_path(candidate, quoted=True)}{problem}; allowed: a CSV or netCDF file, "
+                             "a Dataset or a mapping of arrays")
         if path.suffix.lower() == ".csv":  # (the other columns are named, not parsed: any text)
             return _read_csv(path, limits, progress, {*CANDIDATE_QUANTITIES, *wanted}), {}
         # (loaded whole: the values its header declares count as memory before it is read, as a CSV's rows do)
-        candidate = load_netcdf(path, str(path), "a CSV file with a header or a netCDF-3 file",
-                                lambda lazy: _check_declared(path, lazy, limits))
+        candidate = load_netcdf(path, source, "a CSV file with a header or a netCDF-3 file",
+                                lambda lazy: _check_declared(source, path, lazy, limits))
     if isinstance(candidate, xr.Dataset):
         candidate = _selected(candidate, source, select or {})
         # a simulation of one case (dims ``alpha`` or ``case`` of size 1 beside ``time``) is that case's run
@@ -281,13 +289,13 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
 NETCDF_BYTES_PER_VALUE = 8
 
 
-def _check_declared(path: Path, lazy: xr.Dataset, limits: Limits) -> None:
+def _check_declared(source: str, path: Path, lazy: xr.Dataset, limits: Limits) -> None:
     """Count the values a netCDF file's header declares against ``limits.memory`` before they are loaded: each as stored
     and as the float64 column it is read into (a file of bytes, int8, took 9 times its size: a file's size alone
     counted 1/9 of it; a header may declare more than the file holds)."""
     values = sum(int(variable.size) for variable in lazy.variables.values())
     stored = sum(int(variable.size) * variable.dtype.itemsize for variable in lazy.variables.values())
-    limits.check(f"reading {path} ({path.stat().st_size} bytes; {values} values declared)",
+    limits.check(f"reading {source} ({path.stat().st_size} bytes; {values} values declared)",
                  memory=stored + NETCDF_BYTES_PER_VALUE * values)
 
 
@@ -372,47 +380,48 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         increasing, an infinite value (with its first row; ``nan`` is a missing sample).
     """
     source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
+    where = shown_path(source)  # (as messages name it: one line, a long path cut)
     for argument, given in (("names", names), ("units", units), ("select", select)):
         check_mapping(argument, given, MAPPING_EXAMPLES[argument])
     names = dict(names or {})
     for quantity, column in names.items():  # (a list was unhashable: a raw TypeError)
         if not isinstance(column, str):
-            raise TypeError(f"{source}: names[{quantity!r}]={shown(column)} ({type(column).__name__}) is not allowed; "
+            raise TypeError(f"{where}: names[{quantity!r}]={shown(column)} ({type(column).__name__}) is not allowed; "
                             "allowed: a column's name (str)")
-    columns, declared = _columns_and_units(candidate, source, limits, select, progress, set(names.values()))
+    columns, declared = _columns_and_units(candidate, where, limits, select, progress, set(names.values()))
     units = dict(units or {})
     for quantity in list(names) + list(units):
         if quantity not in CANDIDATE_QUANTITIES:
-            raise ValueError(f"{source}: {shown(quantity)} in names/units is not allowed; allowed: "
+            raise ValueError(f"{where}: {shown(quantity)} in names/units is not allowed; allowed: "
                              f"{', '.join(CANDIDATE_QUANTITIES)}")
-    _check_units_have_columns(source, units, names, columns)
-    found, given, used = _quantities_read(source, columns, names, units, declared)
+    _check_units_have_columns(where, units, names, columns)
+    found, given, used = _quantities_read(where, columns, names, units, declared)
     if "time" not in found:
-        raise UnnamedColumnError(f"{source}: no time column; columns found: {columns_listed(columns)}; allowed: a "
+        raise UnnamedColumnError(f"{where}: no time column; columns found: {columns_listed(columns)}; allowed: a "
                                  "column 'time' or names={'time': <your column>}", ("time",))
     time = found.pop("time")
-    limits.check(f"{source} ({time.size} samples)", samples=time.size)  # (an array or a Dataset as a file's rows)
+    limits.check(f"{where} ({time.size} samples)", samples=time.size)  # (an array or a Dataset as a file's rows)
     if not found:
         others = tuple(quantity for quantity in CANDIDATE_QUANTITIES if quantity != "time")
-        raise UnnamedColumnError(f"{source}: none of {', '.join(others)} found; columns found: "
+        raise UnnamedColumnError(f"{where}: none of {', '.join(others)} found; columns found: "
                                  f"{columns_listed(columns)}; allowed: name yours with names={{quantity: column}}",
                                  others)
     for quantity, values in found.items():
         if values.shape != time.shape:
-            raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} has {values.size} values and the "
+            raise ValueError(f"{where}: column {names.get(quantity, quantity)!r} has {values.size} values and the "
                              f"time {time.size}; allowed: the same length")
     for quantity in ("time", *found):
-        _refuse_magnitudes(source, names.get(quantity, quantity), *given[quantity], time)
+        _refuse_magnitudes(where, names.get(quantity, quantity), *given[quantity], time)
     if time.size < 2 or not np.all(np.isfinite(time)) or np.any(np.diff(time) <= 0):
-        raise ValueError(f"{source}: column {names.get('time', 'time')!r} is not allowed as the time; allowed: at "
+        raise ValueError(f"{where}: column {names.get('time', 'time')!r} is not allowed as the time; allowed: at "
                          "least two finite, strictly increasing values")
     # a share: of the springs in contact, those that slide
     shares = found.get("sliding_fraction", np.zeros(0))
-    _refuse_rows(source, names.get("sliding_fraction", "sliding_fraction"), shares, (shares < 0) | (shares > 1), time,
+    _refuse_rows(where, names.get("sliding_fraction", "sliding_fraction"), shares, (shares < 0) | (shares > 1), time,
                  "shares from 0 to 1 (nan where no spring is in contact); a percentage needs "
                  "units={'sliding_fraction': '%'}", written=lambda value: repr(float(value)))
     for quantity, values in found.items():
-        _refuse_rows(source, names.get(quantity, quantity), values, np.isinf(values), time,
+        _refuse_rows(where, names.get(quantity, quantity), values, np.isinf(values), time,
                      "finite values (nan or an empty field for a missing sample)")
     return Candidate(time, found, source, tuple(name for name in columns if name not in used))
 
@@ -485,9 +494,9 @@ def check_run_is_finite(candidate: Candidate, in_contact: np.ndarray, names: Map
     for quantity, values in candidate.quantities.items():
         finite = np.isfinite(values) | ((~in_contact) if quantity in UNDEFINED_OUT_OF_CONTACT else False)
         if not finite.any():
-            raise ValueError(f"{candidate.source}: column {names.get(quantity, quantity)!r} holds no finite value; "
+            raise ValueError(f"{candidate.where}: column {names.get(quantity, quantity)!r} holds no finite value; "
                              "allowed: a run's samples (leave the column out if the simulator does not write it)")
         last = int(np.flatnonzero(finite)[-1])
-        _refuse_rows(candidate.source, names.get(quantity, quantity), values, ~finite & (np.arange(values.size) < last),
+        _refuse_rows(candidate.where, names.get(quantity, quantity), values, ~finite & (np.arange(values.size) < last),
                      candidate.time, "a finite value at every sample up to the run's end (nan only after it)",
                      context=f", inside the run (finite values follow up to row {last + 1})")

@@ -41,8 +41,8 @@ from mdr_events.io import netcdf3
 from mdr_events.limits import ResourceLimitError
 from mdr_events.io.paths import (ALLOWED_FILE, ALLOWED_PATH, TEMPORARY_MARKER, check_file_path,  # noqa: F401 - as before
                                  check_output_file, check_output_stem, input_file_problem, is_temporary_name,
-                                 prepare_output_directory)
-from mdr_events.validation import shown
+                                 make_directories, prepare_output_directory)
+from mdr_events.validation import shown, shown_path
 
 try:  # POSIX: a writer locks its temporary file, so that another process never takes it for stale
     import fcntl
@@ -190,9 +190,9 @@ def _signals_held():
 def _prepared_target(path: str | os.PathLike) -> Path:
     target = check_output_file("path", path)
     try:
-        target.parent.mkdir(parents=True, exist_ok=True)
+        make_directories(target.parent)
     except OSError as error:  # a race, or a file system that refuses (a read-only mount, /proc)
-        raise ValueError(f"path={os.fspath(path)!r} is not allowed (its directory cannot be created: "
+        raise ValueError(f"path={shown_path(path, quoted=True)} is not allowed (its directory cannot be created: "
                          f"{error.strerror}); allowed: {ALLOWED_FILE}") from None
     return target
 
@@ -243,7 +243,8 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
                 handle, temporary = tempfile.mkstemp(prefix=f".{target.name}{TEMPORARY_MARKER}", suffix=file.suffix,
                                                      dir=target.parent)
             except OSError as error:  # the directory takes no new file (a read-only mount, /proc)
-                raise ValueError(f"path={os.fspath(file.path)!r} is not allowed (no file can be created there: "
+                raise ValueError(f"path={shown_path(file.path, quoted=True)} is not allowed (no file can be created "
+                                 "there: "
                                  f"{error.strerror}); allowed: {ALLOWED_FILE}") from None
             handles.append(handle)
             temporaries.append(temporary)
@@ -388,7 +389,7 @@ def open_result(path: str | os.PathLike) -> xr.Dataset:
     xarray.Dataset
         The result, loaded into memory (the file is closed), with its stamp and parameters as attributes.
     """
-    where = repr(os.fspath(check_file_path("path", path, f"{ALLOWED_PATH} naming a netCDF file")))
+    where = shown_path(check_file_path("path", path, f"{ALLOWED_PATH} naming a netCDF file"), quoted=True)
     dataset = load_netcdf(path, where)
     _check_stamp(dataset, where)
     _check_variables(dataset, where)

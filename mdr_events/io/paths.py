@@ -12,7 +12,7 @@ from typing import Any
 from mdr_events.validation import shown
 
 __all__ = ["check_file_path", "prepare_output_directory", "check_output_file", "check_output_stem",
-           "is_temporary_name", "input_file_problem", "TEMPORARY_MARKER", "MAX_STEM_BYTES", "MAX_NAME_BYTES",
+           "is_temporary_name", "make_directories", "input_file_problem", "TEMPORARY_MARKER", "MAX_STEM_BYTES", "MAX_NAME_BYTES",
            "SYSTEM_DIRECTORIES", "ALLOWED_PATH", "ALLOWED_FILE"]
 
 #: What marks a temporary file of :func:`atomic_write`: ``.<target name>.mdr-tmp-<random><suffix>``.
@@ -96,6 +96,10 @@ def _directory_problem(directory: Path) -> str | None:
     # one not UTF-8 arrives with surrogates, which str.encode refused in a raw UnicodeEncodeError)
     if long:
         return f"its part {shown(long[0])} has {len(os.fsencode(long[0]))} bytes, more than a file system's {MAX_NAME_BYTES}"
+    absolute_bytes = len(os.fsencode(os.path.abspath(directory)))
+    if absolute_bytes > MAX_DIRECTORY_BYTES:  # (refused at the first write, after the run: 12 s of a simulation lost)
+        return (f"its absolute path has {absolute_bytes} bytes, more than the {MAX_DIRECTORY_BYTES} that leave a "
+                f"file's name of {MAX_NAME_BYTES} bytes within a path's {MAX_PATH_BYTES}")
     created = [part.name for part in (directory, *directory.parents) if not os.path.lexists(part)]
     controlled = [part for part in created if any(ord(character) < 32 or ord(character) == 127 for character in part)]
     if controlled:  # (a directory this package would create, with a newline in its name, as a file's name may not)
@@ -128,6 +132,11 @@ def _directory_problem(directory: Path) -> str | None:
 #: random characters and the suffix to it.
 MAX_NAME_BYTES = 255
 _TEMPORARY_EXTRA_BYTES = 1 + len(TEMPORARY_MARKER) + 8 + 8
+#: The longest path the system's calls take (bytes, with its terminating NUL: Linux's ``PATH_MAX``; macOS's is 1024).
+MAX_PATH_BYTES = 4096
+#: The longest output directory (bytes of its absolute path): a file's name of :data:`MAX_NAME_BYTES` and its
+#: separator still fit within :data:`MAX_PATH_BYTES` (with the NUL).
+MAX_DIRECTORY_BYTES = MAX_PATH_BYTES - MAX_NAME_BYTES - 2
 ALLOWED_FILE = (f"a file path (not a directory) of at most {MAX_NAME_BYTES - _TEMPORARY_EXTRA_BYTES} bytes of name, "
                  f"in {_ALLOWED_DIRECTORY}")
 
@@ -205,6 +214,25 @@ def check_output_stem(name: str, stem: Any) -> str:
             or not stem.isprintable() or TEMPORARY_MARKER in stem or len(os.fsencode(stem)) > MAX_STEM_BYTES):
         raise ValueError(f"{name}={shown(stem)} is not allowed; allowed: {_ALLOWED_STEM}")
     return stem
+
+
+def make_directories(directory: str | os.PathLike) -> None:
+    """Create ``directory`` and its missing parents, outermost first, as ``Path.mkdir(parents=True, exist_ok=True)``
+    does but without recursion: pathlib and ``os.makedirs`` call themselves once a level to be made, so that an output
+    path of 1000 new levels (``--out d/d/.../d``, 2 kB, well within a path's 4096 bytes) ended, after the run, in
+    ``RecursionError`` (issue 32, round 30). ``OSError`` as ``mkdir`` raises it (a file where a directory goes
+    included: ``FileExistsError``)."""
+    missing = []
+    current = Path(directory)
+    while not current.is_dir() and current.parent != current:
+        missing.append(current)
+        current = current.parent
+    for part in reversed(missing):
+        try:
+            part.mkdir()
+        except FileExistsError:  # (made meanwhile by another writer: as exist_ok; a file there is refused)
+            if not part.is_dir():
+                raise
 
 
 def is_temporary_name(name: str) -> bool:

@@ -45,7 +45,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models.simulation_schema import SIMULATION_CONTENT, continuum_dataset, simulation_dataset
 from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.layer.punch_onset import check_punch_face
-from mdr_events.validation import MAX_COUNT, allowed_bound, check_count, check_output_times, check_real, shown
+from mdr_events.validation import MAX_COUNT, allowed_bound, as_name, check_count, check_output_times, check_real, shown
 
 __all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_counted_first", "check_time_step",
            "DEFAULT_DX", "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT", "exact_solution",
@@ -588,6 +588,7 @@ def as_method(method, options: Mapping[str, Any] | None = None) -> Method:
             raise ValueError(f"{', '.join(given)} is not allowed beside method={method!r}; allowed: the method's own "
                              "options")
         return method
+    method = as_name(method)
     if not isinstance(method, str) or method not in METHODS:
         raise ValueError(f"method={shown(method)} is not allowed; allowed: {', '.join(map(repr, METHODS))}, or a "
                          "Discrete or Continuum")

@@ -27,7 +27,7 @@ from mdr_events.models.paths import Path
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters  # (the paper's depth and speed: a scenario's defaults)
 from mdr_events.theory import analytic
 from mdr_events.theory.scales import check_representable
-from mdr_events.validation import SCALE_MAX, check_real, shown, validate_alpha
+from mdr_events.validation import SCALE_MAX, as_name, check_real, shown, validate_alpha
 
 __all__ = ["Scenario", "Paths", "Motion", "as_motion", "Cases", "simulation_cases", "scenario_paths",
            "case_dimension", "case_text", "check_path_extent", "check_path_representable", "FIGURE_ANGLES", "SCENARIO_NAMES",
@@ -313,6 +313,7 @@ class Scenario:
     final_depth: float | None = None
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "name", as_name(self.name))  # (np.array("A"), np.str_: the plain name)
         if not isinstance(self.name, str) or self.name not in SCENARIO_NAMES:
             raise ValueError(f"scenario={shown(self.name)} is not allowed; allowed: {SCENARIO_ALLOWED}")
         object.__setattr__(self, "alpha", _angles(self.alpha))
@@ -507,6 +508,7 @@ def as_motion(motion, alpha=None, d_max: float | None = None, v: float | None = 
             raise ValueError(f"{', '.join(given)} is not allowed beside motion={motion!r}; allowed: the motion's own "
                              "(a method is simulate's fourth argument, or method=)")
         return motion
+    motion = as_name(motion)
     if isinstance(motion, str):
         return Scenario(motion, FIGURE_ANGLES if alpha is None else alpha, PAPER_D_MAX if d_max is None else d_max,
                         PAPER_V if v is None else v)

@@ -17,6 +17,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import IO, Any
 
+from mdr_events.io.paths import make_directories
+
 __all__ = ["cache_directory", "read_cached", "store_cached"]
 
 
@@ -86,7 +88,7 @@ def store_cached(path: Path | None, write: Callable[[IO[bytes]], None]) -> None:
         return
     temporary = None
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
+        make_directories(path.parent)
         handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
         with os.fdopen(handle, "wb") as stream:
             write(stream)

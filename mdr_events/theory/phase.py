@@ -127,7 +127,7 @@ def phase_diagram(
         contact = contact_alone(contact, profile, friction)
     else:
         params, profile, friction = theory_job(contact, d_max, profile, friction, what="phase_diagram")
-    check_choice("scenario", scenario, analytic.SCENARIOS)
+    scenario = check_choice("scenario", scenario, analytic.SCENARIOS)
     if isinstance(alpha, str) and alpha in ("A", "B"):  # phase_diagram(contact, "B"): the scenario given as alpha
         raise TypeError(f"alpha={shown(alpha)} is not allowed: a scenario's name where the angles go; allowed: angles in "
                         f"degrees, and the scenario by name: phase_diagram(contact, scenario={alpha!r})")

@@ -177,10 +177,10 @@ def test_the_events_round_trip_and_reports_written_before_still_open(path_a, exa
 
 
 def test_the_rule_names_an_event_out_of_tolerance_and_one_in_one_run_only():
-    from mdr_events.analysis.reports import EventTimes, validation_failures
+    from mdr_events.analysis.reports import EventTimes, ValidationMeasures, validation_failures
     events = EventTimes(("pull_off", "re_contact", "slip_onset"), (100.0, np.nan, 50.0), (90.0, 200.0, np.nan),
                         (0.01, 0.05, np.nan))
-    failures = validation_failures(["normal_force"], [1e-4], 0.0, [0.0], 1e-3, (), events)
+    failures = validation_failures(ValidationMeasures(["normal_force"], [1e-4], 0.0, [0.0], events=events), 1e-3)
     assert [text.split(":")[0] for text in failures] == ["pull_off", "re_contact"]
     assert "not in the exact run" in failures[1]
-    assert validation_failures(["normal_force"], [1e-4], 0.0, [0.0], 0.1, (), events) == []
+    assert validation_failures(ValidationMeasures(["normal_force"], [1e-4], 0.0, [0.0], events=events), 0.1) == []

@@ -116,8 +116,10 @@ def test_the_report_is_typed_and_round_trips_through_a_file(run, tmp_path):
 
 
 def test_the_rule_of_the_verdict_names_each_failure():
-    from mdr_events.analysis.reports import validation_failures
-    assert validation_failures([], [], 0.0, [], 0.1) == ["no quantity compared"]
-    assert validation_failures(["normal_force"], [0.05], 0.0, [0.5], 0.1) == []
-    assert len(validation_failures(["normal_force", "contact_area"], [0.2, float("nan")], 0.3, [2.0, 0.0], 0.1)) == 4
-    assert validation_failures(["tangential_force"], [0.05], float("nan"), [0.0], 0.1) == []  # (no contact shown)
+    from mdr_events.analysis.reports import ValidationMeasures, validation_failures
+    assert validation_failures(ValidationMeasures([], [], 0.0, []), 0.1) == ["no quantity compared"]
+    assert validation_failures(ValidationMeasures(["normal_force"], [0.05], 0.0, [0.5]), 0.1) == []
+    assert len(validation_failures(ValidationMeasures(["normal_force", "contact_area"], [0.2, float("nan")], 0.3,
+                                                      [2.0, 0.0]), 0.1)) == 4
+    assert validation_failures(ValidationMeasures(["tangential_force"], [0.05], float("nan"), [0.0]), 0.1) == []
+    # (no contact shown)

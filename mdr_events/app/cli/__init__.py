@@ -35,6 +35,7 @@ import argparse
 import functools
 import math
 import os
+import re
 import signal
 import sys
 import threading
@@ -43,7 +44,7 @@ from typing import Sequence
 
 from mdr_events._version import __version__
 from mdr_events.app.cli import derive, fit, lammps_check, phase_diagram, reproduce, run, simulate, sweep, validate
-from mdr_events.app.cli._options import Parser, UsageError
+from mdr_events.app.cli._options import Parser, UsageError, _cut
 from mdr_events.app.cli._stdout import stdout_named
 from mdr_events.app.console import INTERRUPTED_LINES
 
@@ -284,6 +285,21 @@ def _file_taken_as_value(argv: Sequence[str]) -> str:
     return ""
 
 
+def _unknown_option(argv: Sequence[str], text: str) -> str:
+    """A hint for a usage error that does not name it: a word before ``--`` written as an option that no command used
+    takes (``--scen A``: options are not abbreviated, and argparse answered only "the following arguments are
+    required: --scenario"); "" if none, or if the error names it already."""
+    argv = list(argv)
+    before = argv[:argv.index("--")] if "--" in argv else argv
+    options = _options_taken(build_parser(), before, multi_value=False)
+    unknown = [word.split("=", 1)[0] for word in before
+               if word.startswith("--") and len(word) > 2 and word.split("=", 1)[0] not in options]
+    if not unknown or re.search(rf"(?<![\w-]){re.escape(unknown[0])}(?![\w-])", text):  # (named whole: --scen is
+        return ""  # not named by "--scenario")
+    return (f" ({_one_line(_cut(unknown[0]))} is no option of this command; options are written whole, not "
+            "abbreviated: --help lists them)")
+
+
 def _silence_stdout() -> None:
     """Point stdout at the null device, so that the interpreter's final flush does not raise again."""
     try:
@@ -342,7 +358,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             raise
         text, code = _outcome(error)
         if isinstance(error, UsageError):
-            text += _file_taken_as_value(sys.argv[1:] if argv is None else list(argv))
+            words = sys.argv[1:] if argv is None else list(argv)
+            text += _file_taken_as_value(words) or _unknown_option(words, text)
         progress(f"mdr-events: {_one_line(text)}")
         return code
     finally:

@@ -242,9 +242,10 @@ def profile(args: argparse.Namespace, simulated: bool = True) -> SimulatedProfil
     """The indenter of :func:`profile_options` (``None``: the paraboloid of the parameters' ``R``); ``simulated``: one
     the simulators take, else any the closed forms take (the phase diagram's)."""
     from mdr_events.app import inputs
+    from mdr_events.validation import shown_path
 
     if args.table is not None:
-        given = f"--table {args.table}"
+        given = f"--table {shown_path(args.table)}"
     elif args.flat_punch is not None:
         given = f"--flat-punch {shown_number(args.flat_punch)}"
     elif args.power_law is not None:

@@ -109,6 +109,7 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
     from mdr_events.io.files import check_output_stem
     from mdr_events.models.motion import Paths
     from mdr_events.models.paths import Path as MotionPath
+    from mdr_events.validation import shown_path
 
     if args.bounds is not None:
         raise UsageError(f"--bounds {' '.join(args.bounds)} is not allowed with --adhesion-law rate; allowed: --free "
@@ -147,7 +148,8 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
                           units, _columns.time_origin(args.time_origin), params.d_max, _options.limits(args),
                           provenance)
     except ValueError as error:
-        raise UsageError(f"the fit of {args.data[0]} would be written as {stem}.*: {error}") from None
+        raise UsageError(f"the fit of {shown_path(args.data[0])} would be written as {shown_path(stem)}.*: "
+                         f"{error}") from None
 
 
 def job(args: argparse.Namespace):
@@ -156,6 +158,7 @@ def job(args: argparse.Namespace):
     from mdr_events.app.jobs import FitJob
     from mdr_events.io.candidates import CANDIDATE_QUANTITIES
     from mdr_events.io.files import check_output_stem
+    from mdr_events.validation import shown_path
 
     params, provenance = _options.measured_parameters(args)
     contact = _options.contact(args, params)  # a bad law is named before anything is written
@@ -167,15 +170,16 @@ def job(args: argparse.Namespace):
             raise UsageError(f"{name} is not allowed with the adhesion law 'paper'; allowed: with --adhesion-law rate "
                              "(the joint fit over speeds)")
     if len(args.data) != 1:
-        raise UsageError(f"{len(args.data)} measurements ({' '.join(args.data)}) are not allowed with the adhesion "
-                         "law 'paper'; allowed: one DATA (several at their --speeds with --adhesion-law rate)")
+        raise UsageError(f"{len(args.data)} measurements ({shown_path(' '.join(args.data))}) are not allowed with the "
+                         "adhesion law 'paper'; allowed: one DATA (several at their --speeds with --adhesion-law rate)")
     args.data = args.data[0]
     _options.check_reference_layer(contact, motion, "fit")
     stem = f"{Path(args.data).stem}_fit"
     try:
         check_output_stem("stem", stem)
     except ValueError as error:
-        raise UsageError(f"the fit of {args.data} would be written as {stem}.*: {error}") from None
+        raise UsageError(f"the fit of {shown_path(args.data)} would be written as {shown_path(stem)}.*: {error}") \
+            from None
     quantities = list(CANDIDATE_QUANTITIES)
     units = _columns.pairs("--units", args.units, quantities)
     noise = _noise(args, units)  # (in the units of --units, SI where none is given)

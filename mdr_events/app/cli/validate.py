@@ -84,20 +84,22 @@ def _stems(args: argparse.Namespace, study: bool) -> tuple[str, ...]:
     """Each run's report stem (its file's stem), checked: distinct, plain, not the convergence study's."""
     from mdr_events.app.jobs import CONVERGENCE_STEM
     from mdr_events.io.files import check_output_stem
+    from mdr_events.validation import shown_path
 
     stems: dict[str, str] = {}
     for run in args.runs:
         stem = Path(run).stem
+        as_stem = f"{shown_path(stem)}.*"  # (a long text given as a run: cut, as the run's path is)
+        written = f"{shown_path(run)} would be written as {as_stem}"
         if stem in stems:
-            raise UsageError(f"the runs {stems[stem]} and {run} would both be written as {stem}.*; allowed: runs "
-                             "with different file names")
+            raise UsageError(f"the runs {shown_path(stems[stem])} and {shown_path(run)} would both be written as "
+                             f"{as_stem}; allowed: runs with different file names")
         if stem == CONVERGENCE_STEM and study:
-            raise UsageError(f"the run {run} would be written as {stem}.*, the convergence study's files; allowed: "
-                             "another file name")
+            raise UsageError(f"the run {written}, the convergence study's files; allowed: another file name")
         try:
             check_output_stem("stem", stem)
         except ValueError as error:
-            raise UsageError(f"the run {run} would be written as {stem}.*: {error}") from None
+            raise UsageError(f"the run {written}: {error}") from None
         stems[stem] = run
     return tuple(stems)
 

@@ -4,12 +4,11 @@ final depth.
 
 from __future__ import annotations
 
-import math
 from typing import Literal
 
 import numpy as np
 
-from mdr_events.theory.analytic.arguments import _rel
+from mdr_events.theory.analytic.arguments import _rel, final_depth_of
 from mdr_events.theory.analytic.normal import hertz_contact_radius, jkr_contact_radius, jump_off
 from mdr_events.theory.analytic.onset import _onset_parameters
 from mdr_events.theory.job import ContactLike, on_layer
@@ -84,7 +83,7 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
         The critical angle in degrees (90 where slip always comes first).
     """
     p = None if on_layer(contact) else _onset_parameters(contact, "critical_angle", d_max)
-    check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
+    scenario = check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
     check_flag("adhesion", adhesion)
     if final_depth is not None and scenario != "B+":
         raise ValueError(f"final_depth={shown(final_depth)} is not allowed with scenario {scenario!r}; "
@@ -94,9 +93,7 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
 
         return critical_angle_on_layer(contact, scenario, adhesion, final_depth, d_max)
     if scenario == "B+":
-        final = 2.0 * p.d_max if final_depth is None else final_depth
-        if not (isinstance(final, (int, float)) and math.isfinite(final) and final > p.d_max):
-            raise ValueError(f"final_depth={shown(final)} is not allowed; allowed: a finite depth > d_max = {p.d_max!r} m")
+        final = final_depth_of(p, final_depth)
         if adhesion:
             radius = jkr_contact_radius(final, p, p.dgamma0)
         else:

@@ -11,7 +11,7 @@ import numpy as np
 from mdr_events.theory import symbolic
 from mdr_events.validation import SCALE_MAX, check_real, real_array, shown
 
-__all__ = ["NONNEGATIVE", "ResultOverflowError", "representable_result"]
+__all__ = ["NONNEGATIVE", "ResultOverflowError", "representable_result", "final_depth_of"]
 
 _Result = TypeVar("_Result")
 
@@ -23,6 +23,17 @@ def _rel(key: str):
 #: Arguments of the closed forms that are lengths or works of their physics, never negative (the parameters refuse a
 #: negative work of adhesion; a negative radius gave a negative critical shift and a positive pull-off force).
 NONNEGATIVE = ("contact_radius", "work_of_adhesion", "amplitude")
+
+
+def final_depth_of(params, final_depth) -> float:
+    """Scenario B+'s deepest point: ``final_depth``, default ``2 d_max`` of ``params``; else ``ValueError`` naming it
+    unless a finite depth beyond ``d_max`` (any real number, as :func:`~mdr_events.validation.check_real` reads it:
+    ``np.float32``, a 0-d array, a ``Fraction``, as ``Scenario(final_depth=...)`` takes them; an integer beyond a
+    double refused, not an ``OverflowError``; a bool refused by its own name)."""
+    if final_depth is None:
+        return 2.0 * params.d_max
+    return check_real("final_depth", final_depth, f"a finite depth > d_max = {params.d_max!r} m",
+                      lambda value: value > params.d_max)
 
 
 def check_work(work_of_adhesion) -> float:
@@ -47,7 +58,7 @@ def _one_work(work_of_adhesion) -> float:
 def _finite(**arguments) -> list:
     """Refuse an argument with an entry that is no finite real number (``10**400`` read as inf), beyond
     ``±SCALE_MAX`` (its square would overflow) or, of :data:`NONNEGATIVE`, below 0, naming it; the arguments checked,
-    in order: a float or a float array as given, one other number (an ``int``, ``np.int64``, a 0-d int array) as a
+    in order: a float or a float64 array as given, one other number (an ``int``, ``np.int64``, a 0-d int array) as a
     float, any other (a list, an int array) as the float array it reads (a closed form of ``array_like`` arguments
     computes on those: a list ended in Python's own ``TypeError``, issue 32 round 28 A2; an ``np.int64`` was computed
     in int64 and overflowed silently)."""
@@ -59,9 +70,9 @@ def _finite(**arguments) -> list:
             if low <= value <= SCALE_MAX:
                 continue
             values = np.asarray(value)
-        elif isinstance(value, np.ndarray) and value.dtype.kind == "f":
-            values = value
-            checked.append(value)
+        elif type(value) is np.ndarray and value.dtype == np.float64:  # (as given; float32 and masked arrays below:
+            values = value  # float32 compared with the bound overflowed in NumPy's cast, a RuntimeWarning, and was
+            checked.append(value)  # computed in float32; a mask was dropped or kept by chance, issue 32 round 30)
         else:
             values = real_array(name, value, "real numbers")
             checked.append(values if np.ndim(value) else float(values))  # (one number: a float, an int's too)

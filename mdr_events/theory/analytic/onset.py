@@ -119,11 +119,11 @@ def d_crit(
     :mod:`mdr_events` docs on the continuum method).
     """
     params = None if on_layer(contact) else _onset_parameters(contact, "d_crit", d_max)
-    check_choice("scenario", scenario, SCENARIOS)
+    scenario = check_choice("scenario", scenario, SCENARIOS)
     if scenario == "A" and branch is not None:
         raise ValueError(f"branch={shown(branch)} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
     branch = "pull-off" if branch is None else branch
-    check_choice("branch", branch, BRANCHES)
+    branch = check_choice("branch", branch, BRANCHES)
     check_flag("adhesion", adhesion)
     if params is None:
         from mdr_events.theory.layer.slip_onset import check_onset_count, onset_depths
@@ -211,7 +211,7 @@ def d_crit_rows(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", 
         variable as it is, without stacking 10⁵ angles' curves afresh).
     """
     params = _onset_parameters(contact, "d_crit", d_max)
-    check_choice("scenario", scenario, SCENARIOS)
+    scenario = check_choice("scenario", scenario, SCENARIOS)
     _check_onset_memory(values_in(alpha), limits, D_CRIT_ROWS_BYTES_PER_ANGLE)  # (counted before they are read)
     alpha_deg = validate_alpha(alpha)
     tangent = _Tangent.of(alpha_deg)

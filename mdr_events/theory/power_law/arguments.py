@@ -5,17 +5,15 @@ up (:func:`_forms`).
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
-from mdr_events.theory.analytic.arguments import check_work
+from mdr_events.theory.analytic.arguments import check_work, final_depth_of  # noqa: F401 - re-exported
 from mdr_events.theory.forms import ClosedForms
-from mdr_events.validation import check_flag, shown, validate_alpha
+from mdr_events.validation import check_flag, validate_alpha
 
 __all__ = ["check_profile", "check_work", "as_output", "path_angles", "final_depth_of", "ADHESIVE_MIN_EXPONENT",
            "check_onset_scales"]
@@ -81,15 +79,6 @@ def path_angles(alpha, adhesion) -> tuple[np.ndarray, np.ndarray]:
     check_flag("adhesion", adhesion)
     alpha_arr = validate_alpha(alpha)
     return alpha_arr, alpha_arr >= 90.0
-
-
-def final_depth_of(params: Parameters, final_depth) -> float:
-    """The "+" branch's deepest point: ``final_depth``, default ``2 d_max``; else ``ValueError`` naming it unless a
-    finite depth beyond ``d_max``."""
-    final = 2.0 * params.d_max if final_depth is None else final_depth
-    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
-        raise ValueError(f"final_depth={shown(final)} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
-    return final
 
 
 def _forms(profile) -> ClosedForms:
