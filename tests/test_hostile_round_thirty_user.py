@@ -16,7 +16,9 @@ import argparse
 import numpy as np
 import pytest
 
+import mdr_events as me
 from hostile_checks import cli_one_line, one_line_naming
+from mdr_events.app.cli import main
 from mdr_events.app.cli.validate import spacings
 from mdr_events.io.candidates import UNITS, read_candidate
 
@@ -151,3 +153,55 @@ def test_the_spacing_in_a_run_s_name_reads_either_mu(micro):
     found, why = spacings(argparse.Namespace(dx=None, runs=runs))
     assert why is None
     np.testing.assert_allclose(found, [8e-6, 4e-6, 2e-6], rtol=READ_BACK_RTOL)
+
+
+# --- 4. the LAMMPS bridge: the guide gives the deck LAMMPS ran (`lmp -in deck.lmp -var output forces.txt`), but its
+# output had no header row and LAMMPS's sign of fx (the wall's force on the sphere): validate could not read it, and
+# a user who named fx the tangential force failed by twice its range ---------------------------------------------
+
+#: LAMMPS's steps of the bridge's run: enough for 20 a segment (the deck's least), few for a cheap test.
+BRIDGE_STEPS = 600
+
+
+def _bridge_run(tmp_path):
+    """A contact of JKR and Coulomb's law run by ``run_lammps`` along scenario A at 20°, and the file its deck prints
+    when run again (as ``lmp -in deck.lmp -var output forces.txt``); skipped without LAMMPS."""
+    from mdr_events.dem import runner
+
+    try:
+        runner.load_lammps()
+    except runner.LammpsUnavailable as error:
+        pytest.skip(f"LAMMPS is not available: {error}")
+    paper = me.Contact.paper()
+    contact = me.Contact(paper.elastomer, paper.indenter, me.Adhesion(0.15, 0.15), me.FrictionLaw("coulomb", mu=0.5))
+    run = me.dem.run_lammps(contact, me.Path.scenario_A(20.0, paper.parameters(3e-4, 1e-6)), "jkr", "mindlin",
+                            steps=BRIDGE_STEPS)
+    output = tmp_path / "forces.txt"
+    runner.run_deck(run.attrs["lammps_input_deck"], output)
+    return contact, run, output
+
+
+def test_a_rerun_of_the_lammps_deck_is_read_as_it_stands(tmp_path):
+    """The file the deck prints is read with no names and no units: the run ``run_lammps`` gives, number for number
+    (17 digits: LAMMPS's doubles)."""
+    _, run, output = _bridge_run(tmp_path)
+    read = read_candidate(output)
+    np.testing.assert_array_equal(read.time, run.time.values)
+    for name in ("normal_force", "tangential_force"):
+        np.testing.assert_array_equal(read.quantities[name], run[name].values)
+    assert set(read.unused) == {"x", "depth", "lammps_contact"}
+
+
+@pytest.mark.slow
+def test_a_rerun_of_the_lammps_deck_is_refereed_as_lammps_check_referees_it(tmp_path, capsys):
+    """``mdr-events validate forces.txt --time-origin path_start`` with the contact's options gives the verdict and
+    the errors of ``validate`` of the run (what ``lammps_check`` reports). Slow: two continuum solves (some 10 s); its
+    quick sibling, ``test_a_rerun_of_the_lammps_deck_is_read_as_it_stands``, checks the file reads as the run."""
+    contact, run, output = _bridge_run(tmp_path)
+    status = main(["validate", str(output), "--scenario", "A", "--alpha", "20", "--time-origin", "path_start",
+                   "--dgamma0", "0.15", "--dgamma1", "0.15", "--friction", "coulomb", "--mu", "0.5",
+                   "--out", str(tmp_path / "checks")])
+    report = me.open_result(tmp_path / "checks" / "forces.nc")
+    referee = me.validate(run, contact, "A", 20.0)
+    assert status == 1 and report.attrs["verdict"] == referee.attrs["verdict"] == "fail", capsys.readouterr()
+    np.testing.assert_array_equal(report["max_error"].values, referee["max_error"].values)
