@@ -205,3 +205,67 @@ def test_a_rerun_of_the_lammps_deck_is_refereed_as_lammps_check_referees_it(tmp_
     referee = me.validate(run, contact, "A", 20.0)
     assert status == 1 and report.attrs["verdict"] == referee.attrs["verdict"] == "fail", capsys.readouterr()
     np.testing.assert_array_equal(report["max_error"].values, referee["max_error"].values)
+
+
+# --- 5. a verdict a user would misread: a tangential force in mN read as N (the guide's `--units
+# time=ms,normal_force=mN` on a file whose F_x is in mN too) failed with "max error 997 of its range", a flipped sign
+# with "2 of its range", a diameter written for the radius with "1 of its range": none said why ----------------
+
+#: Relative tolerance of a least-squares scale recovered from exactly scaled samples (rounding only).
+SCALE_RTOL = 1e-12
+#: The exact curve of the scale tests: a loading and unloading with a tensile end, as a force's.
+EXACT = np.sin(np.linspace(0.0, 3.5, 200))
+EVERYWHERE = np.ones(EXACT.size, dtype=bool)
+
+
+@pytest.mark.parametrize(("factor", "said"), [(1e3, "1000 times the exact throughout: its unit?"),
+                                              (1e-3, "0.001 times the exact throughout: its unit?"),
+                                              (1e6, "1e+06 times"), (1e-2, "0.01 times"),
+                                              (-1.0, "minus the exact throughout: the other sign convention?"),
+                                              (-1e3, "-1000 times the exact throughout: its unit and sign?")])
+def test_a_candidate_a_unit_or_a_sign_away_is_named(factor, said):
+    from mdr_events.analysis.reports import scale_hint, validation_failures
+    from mdr_events.analysis.samples import candidate_scale
+
+    scale = candidate_scale(factor * EXACT, EXACT, EVERYWHERE)
+    np.testing.assert_allclose(scale[0], factor, rtol=SCALE_RTOL)
+    assert said in scale_hint(*scale)
+    failures = validation_failures(["normal_force"], [abs(factor - 1.0)], 0.0, [0.0], 1e-3, scales=[scale])
+    assert said in failures[0] and failures[0].startswith("normal_force: max error"), failures
+
+
+def test_a_diameter_is_named_for_the_radius_only():
+    from mdr_events.analysis.reports import scale_hint
+    from mdr_events.analysis.samples import candidate_scale
+
+    scale = candidate_scale(2.0 * EXACT, EXACT, EVERYWHERE)
+    assert "a diameter?" in scale_hint(*scale, "contact_radius")
+    assert scale_hint(*scale, "normal_force") == ""
+
+
+@pytest.mark.parametrize("candidate", [1.1 * EXACT,  # a model 10 % strong: its own error, no unit
+                                       1e3 * EXACT + 0.2 * 1e3 * np.cos(np.linspace(0.0, 3.5, 200)),  # not a scale
+                                       1.2e3 * EXACT,  # beyond SCALE_HINT_RTOL of 1000
+                                       np.zeros(EXACT.size)])
+def test_a_candidate_no_unit_or_sign_away_names_no_scale(candidate):
+    from mdr_events.analysis.reports import scale_hint
+    from mdr_events.analysis.samples import candidate_scale
+
+    assert scale_hint(*candidate_scale(candidate, EXACT, EVERYWHERE), "contact_radius") == ""
+
+
+def test_the_report_and_its_file_name_the_scale(tmp_path):
+    """End to end: ``validate`` of a run whose F_x is in mN read as N and whose F_N has the other sign names both in
+    its failures, and so does the report read back from its file (``ValidationReport.failures``). The candidate is the
+    exact continuum's run itself, scaled."""
+    contact = me.Contact.paper()
+    reference = me.simulate(contact, me.Scenario("A", alpha=[20]), me.Continuum(samples=401)).sel(alpha=20)
+    inside = np.isfinite(reference.normal_force.values)
+    run = {"time": reference.time.values[inside], "normal_force": -reference.normal_force.values[inside],
+           "tangential_force": 1e3 * reference.tangential_force.values[inside]}
+    report = me.validate(run, contact, "A", 20.0)
+    me.write_netcdf(report, tmp_path / "report.nc")
+    for failures in (me.ValidationReport.from_dataset(report).failures,
+                     me.ValidationReport.from_dataset(me.open_result(tmp_path / "report.nc")).failures):
+        assert any(line.startswith("normal_force: max error") and "minus the exact" in line for line in failures)
+        assert any(line.startswith("tangential_force: max error") and "1000 times" in line for line in failures)
