@@ -70,6 +70,23 @@ def test_blank_separated_rows_may_be_indented_and_padded(tmp_path):
     _assert_read_in_si(path)
 
 
+def test_a_header_of_spaces_over_rows_of_tabs_is_read(tmp_path):
+    """Blanks are blanks: a header aligned with spaces over rows written with tabs (or mixed) splits the same."""
+    path = tmp_path / "mixed.dat"
+    rows = ["\t".join(f"{value:.12g}" for value in row) + " \t" for row in LAB_COLUMNS]
+    path.write_text("\n".join([" ".join(LAB_NAMES.values()), *rows]) + "\n", encoding="utf-8")
+    _assert_read_in_si(path)
+
+
+def test_utf16_text_of_any_name_is_named_as_text(tmp_path):
+    """A spreadsheet's "Unicode text" (UTF-16, NUL bytes in it) named ``run.txt`` is refused as text that is not
+    UTF-8, as the same file named ``run.csv`` is, not as a netCDF file that does not start as one."""
+    for name in ("run.txt", "run.csv"):
+        path = tmp_path / name
+        path.write_text("t,Fn\n0,1\n", encoding="utf-16")
+        one_line_naming(lambda path=path: read_candidate(path, {"time": "t", "normal_force": "Fn"}), "not UTF-8 text")
+
+
 def test_a_netcdf_file_of_any_name_is_still_read_as_netcdf(tmp_path):
     """Told apart by its first bytes, not its name: a netCDF-3 file named ``.dat`` is read as netCDF; a text file named
     ``.nc`` is still refused as no netCDF file."""

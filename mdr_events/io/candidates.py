@@ -154,10 +154,9 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
             lines = data_lines(handle)
             first = next(lines, "")
             mark = _delimiter(first)
-            if mark == " ":  # (columns aligned by any run of blanks: fields are the line's words)
-                lines = (text.strip() for text in lines)
-            reader = csv.reader(itertools.chain([first.strip() if mark == " " else first], lines), delimiter=mark,
-                                skipinitialspace=mark == " ")
+            if mark == " ":  # (columns aligned by any run of blanks, spaces or tabs: fields are the line's words)
+                first, lines = " ".join(first.split()), (" ".join(text.split()) for text in lines)
+            reader = csv.reader(itertools.chain([first], lines), delimiter=mark)
             header = [name.strip() for name in next(reader, [])]
             _check_header(path, line[0], header)
             limits.check(f"reading {path} ({rows} rows of {len(header)} columns)", samples=rows,
@@ -257,6 +256,8 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
 
 #: Bytes of a file read to tell a text table from a netCDF file.
 _SNIFFED_BYTES = 4096
+#: The byte-order marks of UTF-16 text, which spreadsheets save as "Unicode text" (its NUL bytes are no netCDF's).
+UTF16_MARKS = (b"\xff\xfe", b"\xfe\xff")
 
 
 def _is_text(path: Path) -> bool:
@@ -265,6 +266,8 @@ def _is_text(path: Path) -> bool:
     not a netCDF-3 or HDF5 file's."""
     with open(path, "rb") as handle:
         head = handle.read(_SNIFFED_BYTES)
+    if head.startswith(UTF16_MARKS):  # (a spreadsheet's "Unicode text": the CSV reader names its encoding)
+        return True
     if not head or head.startswith((NETCDF3_MAGIC, HDF5_MAGIC)) or b"\0" in head:
         return False
     try:
