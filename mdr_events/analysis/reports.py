@@ -78,7 +78,7 @@ def _event_failures(events: EventTimes, tolerance: float) -> list[str]:
 
 #: How close the candidate's least-squares scale on the exact quantity is to a power of ten or to -1, and how small
 #: the fit's largest residual (relative to the scaled range), for a failing max error to name the scale: 5 % tells a
-#: unit's factor (10^3 between mN and N, a diameter's 2 is none) or a sign from a model's error of that size.
+#: unit's factor (10^3 between mN and N), a sign or a diameter's 2 from a model's error of that size.
 SCALE_HINT_RTOL = 0.05
 
 
@@ -88,10 +88,10 @@ RADIUS = "contact_radius"
 
 def scale_hint(factor: float, residual: float, quantity: str = "") -> str:
     """What a failing quantity's scale on the exact says (empty: nothing): that the candidate is a power of ten times
-    it (a unit), minus it (a sign convention) or, for the contact radius, twice it (a diameter), where the fit ``candidate ≈ factor exact`` holds to
-    :data:`SCALE_HINT_RTOL` of the range (:func:`mdr_events.analysis.samples.candidate_scale`). Round 30: a
-    tangential force in mN read as N failed with "max error 997 of its range", a flipped one with "2 of its range",
-    neither saying why."""
+    it (a unit), minus it (a sign convention) or, for the contact radius, twice it (a diameter), where the fit
+    ``candidate ≈ factor exact`` holds to :data:`SCALE_HINT_RTOL` of the range
+    (:func:`mdr_events.analysis.samples.candidate_scale`). Round 30: a tangential force in mN read as N failed with
+    "max error 997 of its range", a flipped one with "2 of its range", neither saying why."""
     if not (math.isfinite(factor) and factor != 0.0 and residual <= SCALE_HINT_RTOL):
         return ""
     if quantity == RADIUS and abs(factor / 2.0 - 1.0) <= SCALE_HINT_RTOL:

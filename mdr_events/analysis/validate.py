@@ -25,7 +25,8 @@ from mdr_events.analysis.samples import (COMPARED, CONTACT_INDICATORS, FULL_SLIP
                                         VALIDATED_EVENTS, candidate_events, check_run_covers_the_contact,
                                         compared_samples, contact_change_excess, contact_differs_share, corner_excess,
                                         event_time_errors,
-                                        events_not_shown, exact_at, in_contact, left_out_error, relative_norms, candidate_scale,
+                                        events_not_shown, exact_at, in_contact, left_out_error, relative_norms,
+                                        candidate_scale,
                                         uncovered_share)
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate

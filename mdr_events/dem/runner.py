@@ -137,7 +137,8 @@ def _dataset(table: np.ndarray, contact: Contact, path: Path, attrs: dict[str, A
             "units": "N", "long_name": "normal force F_N on the sphere (LAMMPS)"}),
         "tangential_force": ("time", columns["tangential_force"], {
             "units": "N", "long_name": "tangential force F_x (LAMMPS: minus the wall's force on the sphere along x)"}),
-        "lammps_contact": ("time", columns["lammps_contact"], {"units": "1", "long_name": "1: the wall holds a contact"}),
+        "lammps_contact": ("time", columns["lammps_contact"], {
+            "units": "1", "long_name": "1: the wall holds a contact"}),
         "x": ("time", columns["x"], {"units": "m", "long_name": "tangential position of the sphere (LAMMPS)"}),
         "depth": ("time", columns["depth"], {"units": "m", "long_name": "overlap d = R - z (LAMMPS)"}),
     }

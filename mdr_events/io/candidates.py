@@ -193,12 +193,14 @@ LAMMPS_DUMP_HEADER = "ITEM:"
 
 def _check_header(path: Path, number: int, header: list[str]) -> None:
     """``ValueError`` naming the file and its line ``number`` where the header row is missing (an empty file), is a
-    LAMMPS dump's (``ITEM: TIMESTEP``), holds numbers only (a file without a header: its first row of data was read as the names) or names a column twice."""
+    LAMMPS dump's (``ITEM: TIMESTEP``), holds numbers only (a file without a header: its first row of data was read
+    as the names) or names a column twice."""
     if not header:
         raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
     if header[0] == LAMMPS_DUMP_HEADER:
-        raise ValueError(f"{path}: line {number} ({cut_text(' '.join(header), LISTED_CHARACTERS)}) starts a LAMMPS dump "
-                         "(atoms' snapshots), not a table of the run; allowed: a header row and a row per time, as "
+        shown_header = cut_text(" ".join(header), LISTED_CHARACTERS)
+        raise ValueError(f"{path}: line {number} ({shown_header}) starts a LAMMPS dump (atoms' snapshots), not a "
+                         "table of the run; allowed: a header row and a row per time, as "
                          "LAMMPS's fix print writes it (title \"t Fn Ft\" and one line per step)")
     if all(_is_number(name) for name in header):
         raise ValueError(f"{path}: line {number} ({cut_text(', '.join(header), LISTED_CHARACTERS)}) holds numbers, "
@@ -261,9 +263,9 @@ UTF16_MARKS = (b"\xff\xfe", b"\xfe\xff")
 
 
 def _is_text(path: Path) -> bool:
-    """Whether the file at ``path`` is a text table whatever its name but ``.nc`` (``run.txt``, ``run.tsv``, ``run.dat``:
-    round 30 read them as netCDF and said they do not start as netCDF does): its first bytes are UTF-8 without a NUL byte and
-    not a netCDF-3 or HDF5 file's."""
+    """Whether the file at ``path`` is a text table whatever its name but ``.nc`` (``run.txt``, ``run.tsv``,
+    ``run.dat``: round 30 read them as netCDF and said they do not start as netCDF does): its first bytes are UTF-8
+    without a NUL byte and not a netCDF-3 or HDF5 file's, or UTF-16 text (:data:`UTF16_MARKS`)."""
     with open(path, "rb") as handle:
         head = handle.read(_SNIFFED_BYTES)
     if head.startswith(UTF16_MARKS):  # (a spreadsheet's "Unicode text": the CSV reader names its encoding)
@@ -289,7 +291,8 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
         if problem is not None:
             raise ValueError(f"candidate={str(candidate)!r}{problem}; allowed: a CSV or netCDF file, a Dataset or a "
                              "mapping of arrays")
-        if path.suffix.lower() == ".csv" or (path.suffix.lower() != ".nc" and _is_text(path)):  # (the other columns are named, not parsed: any text)
+        # (a text table of any name but .nc; its other columns are named, not parsed: any text)
+        if path.suffix.lower() == ".csv" or (path.suffix.lower() != ".nc" and _is_text(path)):
             return _read_csv(path, limits, progress, {*CANDIDATE_QUANTITIES, *wanted}), {}
         # (loaded whole: its size counts as memory before it is read, as a CSV's rows do)
         limits.check(f"reading {path} ({path.stat().st_size} bytes)", memory=path.stat().st_size)
