@@ -212,8 +212,11 @@ class ValidationReport(_Report):
         events = EventTimes([str(name) for name in data["event"].values], data["event_time_exact"].values,
                             data["event_time_candidate"].values, data["event_time_relative_error"].values) \
             if "event_time_relative_error" in data else None  # (files written before compared no events)
-        scales = np.column_stack([data["candidate_scale"].values, data["candidate_scale_residual"].values]) \
-            if "candidate_scale" in data else ()  # (files written before hold no scale)
+        from mdr_events.analysis.samples import candidate_scale  # (the samples' module loads the models)
+
+        scales = [candidate_scale(data[f"candidate_{name}"].values, data[f"exact_{name}"].values,
+                                  np.isfinite(data[f"difference_{name}"].values)) for name in quantities] \
+            if all(f"difference_{name}" in data for name in quantities) else ()  # (as validate found them)
         return validation_failures(quantities, data["max_error"].values, share, left_out, self.tolerance, corner,
                                    events, change, scales)
 

@@ -336,11 +336,12 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress) -> _Sample
 
 
 def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance: float
-                    ) -> tuple[list[float], list[float], list[float], list[float], np.ndarray]:
+                    ) -> tuple[list[float], list[float], list[float], list[float], list[tuple[float, float]]]:
     """Per quantity: the candidate, the exact values and their difference along time, the norms, whether within
     ``tolerance``, the largest error of the samples left out, of those at a corner beyond the exact change there and
-    of those where the contact differs beyond the exact values around them, the candidate's scale on the exact; returns
-    the max errors, the left-out errors, the corners' excess, the contact changes' and the scales (factor, residual)."""
+    of those where the contact differs beyond the exact values around them, and the candidate's scale on the exact
+    (not stored: the report's candidate and exact values give it); returns the max errors, the left-out errors, the
+    corners' excess, the contact changes' and the scales (factor, residual)."""
     norms = {"max_error": [], "rms_error": [], "l1_error": []}
     left_out_errors, excess, change, scales = [], [], [], []
     for name in present:
@@ -374,11 +375,6 @@ def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance
         "units": "1", "long_name": "max error of a sample where one run is in contact and the other is not, or of one "
                                    "straddling a contact made, beyond the exact values around it and 0, relative to "
                                    "the range (the verdict's bound: tolerance)"})
-    scales = np.array(scales, dtype=float).reshape(len(present), 2)
-    data["candidate_scale"] = (("quantity",), scales[:, 0], {
-        "units": "1", "long_name": "factor k of the least-squares fit candidate = k exact over the compared samples"})
-    data["candidate_scale_residual"] = (("quantity",), scales[:, 1], {
-        "units": "1", "long_name": "largest residual of that fit relative to |k| times the exact range"})
     return norms["max_error"], left_out_errors, excess, change, scales
 
 
