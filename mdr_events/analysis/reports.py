@@ -76,6 +76,35 @@ def _event_failures(events: EventTimes, tolerance: float) -> list[str]:
     return failures
 
 
+#: How close the candidate's least-squares scale on the exact quantity is to a power of ten or to -1, and how small
+#: the fit's largest residual (relative to the scaled range), for a failing max error to name the scale: 5 % tells a
+#: unit's factor (10^3 between mN and N), a sign or a diameter's 2 from a model's error of that size.
+SCALE_HINT_RTOL = 0.05
+
+
+#: The quantity whose candidate twice the exact is a diameter written for it.
+RADIUS = "contact_radius"
+
+
+def scale_hint(factor: float, residual: float, quantity: str = "") -> str:
+    """What a failing quantity's scale on the exact says (empty: nothing): that the candidate is a power of ten times
+    it (a unit), minus it (a sign convention) or, for the contact radius, twice it (a diameter), where the fit
+    ``candidate ≈ factor exact`` holds to :data:`SCALE_HINT_RTOL` of the range
+    (:func:`mdr_events.analysis.samples.candidate_scale`). Round 30: a tangential force in mN read as N failed with
+    "max error 997 of its range", a flipped one with "2 of its range", neither saying why."""
+    if not (math.isfinite(factor) and factor != 0.0 and residual <= SCALE_HINT_RTOL):
+        return ""
+    if quantity == RADIUS and abs(factor / 2.0 - 1.0) <= SCALE_HINT_RTOL:
+        return " (the candidate is 2 times the exact throughout: a diameter?)"
+    nearest = math.copysign(10.0 ** round(math.log10(abs(factor))), factor)
+    if nearest == 1.0 or abs(factor / nearest - 1.0) > SCALE_HINT_RTOL:
+        return ""
+    if nearest < 0.0 and abs(nearest) == 1.0:
+        return " (the candidate is minus the exact throughout: the other sign convention?)"
+    why = "its unit and sign?" if nearest < 0.0 else "its unit?"
+    return f" (the candidate is {nearest:g} times the exact throughout: {why})"
+
+
 class ValidationMeasures(NamedTuple):
     """What a validation measured, which :func:`validation_failures` judges: each sequence has one value per quantity
     compared, in the order of ``quantities`` (shares of that quantity's range); the others are the run's."""
@@ -94,6 +123,9 @@ class ValidationMeasures(NamedTuple):
     contact_change_excess: Sequence[float] = ()
     #: the events compared (``None``: a report written before events were compared)
     events: EventTimes | None = None
+    #: per quantity the candidate's least-squares scale on the exact and its residual (:func:`scale_hint`; empty:
+    #: none named)
+    scales: Sequence[Sequence[float]] = ()
 
 
 def validation_failures(measures: ValidationMeasures, tolerance: float) -> list[str]:
@@ -102,12 +134,15 @@ def validation_failures(measures: ValidationMeasures, tolerance: float) -> list[
     one run only above ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact
     value; a sample at a corner or a reversal farther than ``tolerance`` beyond the exact change beside it, or one
     where the contact differs or is made farther than ``tolerance`` beyond the exact values around it and 0; an
-    event's time off by more than ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`)."""
-    quantities, max_errors, contact_differs, left_out_errors, corner_excess, contact_change_excess, events = measures
+    event's time off by more than ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`); a
+    failing max error names the candidate's scale where it is a unit's factor or a sign away (:func:`scale_hint`)."""
+    (quantities, max_errors, contact_differs, left_out_errors, corner_excess, contact_change_excess, events,
+     scales) = measures
     if not len(quantities):
         return ["no quantity compared"]
-    failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}"
-                for name, error in zip(quantities, max_errors) if not error <= tolerance]
+    hints = [scale_hint(*scale, name) for scale, name in zip(scales, quantities)] or [""] * len(quantities)
+    failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}{hint}"
+                for name, error, hint in zip(quantities, max_errors, hints) if not error <= tolerance]
     if contact_differs > tolerance:  # (nan: a report written before, of a tangential force alone)
         failures.append(f"contact: {contact_differs:.3g} of the exact contact's time in contact in one run only or "
                         f"not sampled > tolerance {tolerance:g}")
@@ -197,8 +232,13 @@ class ValidationReport(_Report):
         events = EventTimes([str(name) for name in data["event"].values], data["event_time_exact"].values,
                             data["event_time_candidate"].values, data["event_time_relative_error"].values) \
             if "event_time_relative_error" in data else None  # (files written before compared no events)
+        from mdr_events.analysis.samples import candidate_scale  # (the samples' module loads the models)
+
+        scales = [candidate_scale(data[f"candidate_{name}"].values, data[f"exact_{name}"].values,
+                                  np.isfinite(data[f"difference_{name}"].values)) for name in quantities] \
+            if all(f"difference_{name}" in data for name in quantities) else ()  # (as validate found them)
         return validation_failures(ValidationMeasures(quantities, data["max_error"].values, share, left_out, corner,
-                                                      change, events), self.tolerance)
+                                                      change, events, scales), self.tolerance)
 
 
 @dataclass(frozen=True)

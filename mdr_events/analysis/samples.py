@@ -294,6 +294,19 @@ def exact_range(exact: np.ndarray, compared: np.ndarray) -> float:
     return float(np.max(e) - np.min(e)) or float(np.max(np.abs(e))) or 1.0
 
 
+def candidate_scale(candidate: np.ndarray, exact: np.ndarray, compared: np.ndarray) -> tuple[float, float]:
+    """The factor ``k`` of the least-squares fit ``candidate ≈ k exact`` over the compared samples, and the fit's
+    largest residual relative to ``|k|`` times the exact range (``nan``, ``nan`` where the exact values are all 0 or
+    none is compared): a candidate a unit's factor or a sign away from the exact (:func:`scale_hint`)."""
+    c, e = candidate[compared], exact[compared]
+    norm = float(np.dot(e, e)) if e.size else 0.0
+    if not norm > 0.0 or not np.all(np.isfinite(c)):
+        return math.nan, math.nan
+    factor = float(np.dot(c, e)) / norm
+    spread = abs(factor) * exact_range(exact, compared)
+    return factor, (float(np.max(np.abs(c - factor * e))) / spread if spread > 0.0 else math.nan)
+
+
 def relative_norms(times, difference, exact, compared) -> tuple[float, float, float]:
     """max, RMS and time-weighted L1 of the difference over the compared samples, each relative to the
     exact quantity's range there."""

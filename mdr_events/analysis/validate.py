@@ -27,6 +27,7 @@ from mdr_events.analysis.samples import (COMPARED, CONTACT_INDICATORS, FULL_SLIP
                                         contact_of_tangential_force, corner_excess,
                                         event_time_errors,
                                         events_not_shown, exact_at, in_contact, left_out_error, relative_norms,
+                                        candidate_scale,
                                         uncovered_share)
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
@@ -278,7 +279,7 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
         "units": "1", "long_name": "why a sample is left out", "flag_values": np.array(list(LEFT_OUT_CODES), dtype=np.int8),
         "flag_meanings": " ".join(m.replace(" ", "_") for m in LEFT_OUT_CODES.values())})}
     present = [name for name in COMPARED if name in samples.quantities]
-    max_errors, left_out_errors, corner, change = _norm_variables(data, samples, present, tolerance)
+    max_errors, left_out_errors, corner, change, scales = _norm_variables(data, samples, present, tolerance)
     differs = _contact_variable(data, samples)
     events, not_shown = _event_variables(data, samples, job)
     data["samples_compared"] = ((), int(np.count_nonzero(samples.compared)), {"units": "1",
@@ -289,7 +290,7 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
     failures = validation_failures(ValidationMeasures(present, max_errors, differs, left_out_errors, corner, change,
-                                                      events), tolerance)
+                                                      events, scales), tolerance)
     verdict = Verdict.FAIL if failures else Verdict.PASS
     read, model = samples.read, job.model
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
@@ -348,15 +349,17 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress, tolerance:
 
 
 def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance: float
-                    ) -> tuple[list[float], list[float], list[float], list[float]]:
+                    ) -> tuple[list[float], list[float], list[float], list[float], list[tuple[float, float]]]:
     """Per quantity: the candidate, the exact values and their difference along time, the norms, whether within
     ``tolerance``, the largest error of the samples left out, of those at a corner beyond the exact change there and
-    of those where the contact differs beyond the exact values around them; returns the max errors, the left-out
-    errors, the corners' excess and the contact changes'."""
+    of those where the contact differs beyond the exact values around them, and the candidate's scale on the exact
+    (not stored: the report's candidate and exact values give it); returns the max errors, the left-out errors, the
+    corners' excess, the contact changes' and the scales (factor, residual)."""
     norms = {"max_error": [], "rms_error": [], "l1_error": []}
-    left_out_errors, excess, change = [], [], []
+    left_out_errors, excess, change, scales = [], [], [], []
     for name in present:
         candidate, exact = samples.quantities[name], samples.exact[name]
+        scales.append(candidate_scale(candidate, exact, samples.compared))
         left_out_errors.append(left_out_error(candidate, exact, samples.codes, samples.compared))
         change.append(contact_change_excess(samples.times, candidate, exact, samples.codes, samples.compared,
                                             samples.solution.events))
@@ -385,7 +388,7 @@ def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance
         "units": "1", "long_name": "max error of a sample where one run is in contact and the other is not, or of one "
                                    "straddling a contact made, beyond the exact values around it and 0, relative to "
                                    "the range (the verdict's bound: tolerance)"})
-    return norms["max_error"], left_out_errors, excess, change
+    return norms["max_error"], left_out_errors, excess, change, scales
 
 
 def _contact_variable(data: dict, samples: _Samples) -> float:

@@ -10,8 +10,9 @@ the displacement is the path's piecewise-linear ``(x(t), d(t))`` written as a su
 exact at every step wherever its corners fall, and the velocity the mean over the step just taken,
 ``(X(t) - X(t - dt)) / dt``, so that LAMMPS's tangential history ``Σ v_t dt`` telescopes to the path's tangential
 displacement since the first step in contact (D2). Each step, ``fix print`` writes the time, the position, the
-wall's force on the sphere and whether the wall holds a contact (``fix wall/gran ... contacts``), each to 17
-significant digits: the file's numbers are LAMMPS's doubles.
+MDR's forces (the wall's force on the sphere: along z, and minus it along x) and whether the wall holds a contact
+(``fix wall/gran ... contacts``), each to 17 significant digits (the file's numbers are LAMMPS's doubles), under a
+header row naming them as :func:`mdr_events.validate` reads them (:data:`OUTPUT_COLUMNS`).
 
 The output file is the index variable ``output`` (``lmp -in deck.lmp -var output forces.txt`` overrides it).
 """
@@ -33,8 +34,12 @@ __all__ = ["MIN_STEPS_PER_SEGMENT", "OUTPUT_COLUMNS", "DEFAULT_OUTPUT", "steps_f
 #: The least number of time steps on each segment of the path: a corner is then resolved to 1/20 of the shortest
 #: segment's duration, and a segment is no jump in LAMMPS's history (D2).
 MIN_STEPS_PER_SEGMENT = 20
-#: The columns ``fix print`` writes, in order.
-OUTPUT_COLUMNS = ("time", "x", "depth", "fx", "fz", "contact")
+#: The columns ``fix print`` writes, in order, under a header row of these names (its ``title``): the time from the
+#: path's start, the sphere's position, the MDR's forces (``tangential_force``: minus the wall's force on the sphere
+#: along x) and LAMMPS's contact flag, as :func:`mdr_events.validate` reads them by name, so that a rerun of the deck
+#: is refereed as it stands (``time_origin="path_start"``). Round 30: the file had no header and LAMMPS's sign of
+#: ``fx``: a user who named ``fx`` the tangential force failed by twice its range.
+OUTPUT_COLUMNS = ("time", "x", "depth", "tangential_force", "normal_force", "lammps_contact")
 #: The file name the deck prints to unless ``-var output FILE`` is given.
 DEFAULT_OUTPUT = "lammps_forces.txt"
 
@@ -149,7 +154,7 @@ def input_deck(contact: Contact, model: LammpsModel, numbers: WallCoefficients, 
     :func:`~mdr_events.dem.mapping.wall_model_arguments`, the motion along ``path``, ``steps`` steps of ``dt``."""
     R = contact.indenter.R
     x0, d0 = path.waypoints[0]
-    printed = " ".join(f"$({name}:%.17g)" for name in ("time", "v_px", "v_pd", "v_fx", "v_fz", "v_contact"))
+    printed = " ".join(f"$({name}:%.17g)" for name in ("time", "v_px", "v_pd", "v_ft", "v_fn", "v_contact"))
     lines = [
         "# mdr_events: a sphere against a flat wall along a path (rerun: lmp -in this_file -var output FILE)",
         f"variable output index {DEFAULT_OUTPUT}",
@@ -162,8 +167,8 @@ def input_deck(contact: Contact, model: LammpsModel, numbers: WallCoefficients, 
         f"fix wall all wall/gran granular {wall_model_arguments(model, numbers)} zplane 0 NULL contacts",
         "compute touching all reduce sum f_wall[1]",
         "variable px equal x[1]", f"variable pd equal {_n(R)}-z[1]",
-        "variable fx equal fx[1]", "variable fz equal fz[1]", "variable contact equal c_touching",
-        f'fix output all print 1 "{printed}" file ${{output}} screen no',
+        "variable ft equal -1*fx[1]", "variable fn equal fz[1]", "variable contact equal c_touching",
+        f'fix output all print 1 "{printed}" file ${{output}} screen no title "{" ".join(OUTPUT_COLUMNS)}"',
         "thermo 0",
         f"run {steps}",
     ]

@@ -116,7 +116,7 @@ def run_deck(deck: str, output: FilePath) -> tuple[np.ndarray, int]:
         raise LammpsError(f"LAMMPS: {_one_line(error)}") from None
     finally:
         instance.close()
-    table = np.loadtxt(output, comments="#", ndmin=2)
+    table = np.loadtxt(output, comments="#", skiprows=1, ndmin=2)  # (its first line: the header, OUTPUT_COLUMNS)
     if table.shape[1] != len(OUTPUT_COLUMNS):
         raise LammpsError(f"LAMMPS printed {table.shape[1]} columns to {output}; expected {len(OUTPUT_COLUMNS)} "
                           f"({', '.join(OUTPUT_COLUMNS)})")
@@ -133,10 +133,12 @@ def _dataset(table: np.ndarray, contact: Contact, path: Path, attrs: dict[str, A
     """The run in the schema :func:`~mdr_events.validate` reads (time from the path's start)."""
     columns = dict(zip(OUTPUT_COLUMNS, table.T))
     data = {
-        "normal_force": ("time", columns["fz"], {"units": "N", "long_name": "normal force F_N on the sphere (LAMMPS)"}),
-        "tangential_force": ("time", -columns["fx"], {
+        "normal_force": ("time", columns["normal_force"], {
+            "units": "N", "long_name": "normal force F_N on the sphere (LAMMPS)"}),
+        "tangential_force": ("time", columns["tangential_force"], {
             "units": "N", "long_name": "tangential force F_x (LAMMPS: minus the wall's force on the sphere along x)"}),
-        "lammps_contact": ("time", columns["contact"], {"units": "1", "long_name": "1: the wall holds a contact"}),
+        "lammps_contact": ("time", columns["lammps_contact"], {
+            "units": "1", "long_name": "1: the wall holds a contact"}),
         "x": ("time", columns["x"], {"units": "m", "long_name": "tangential position of the sphere (LAMMPS)"}),
         "depth": ("time", columns["depth"], {"units": "m", "long_name": "overlap d = R - z (LAMMPS)"}),
     }

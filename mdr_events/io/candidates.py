@@ -11,6 +11,7 @@ import csv
 import itertools
 import math
 import os
+import unicodedata
 from array import array
 from pathlib import Path
 from typing import Callable, Collection, Mapping, NamedTuple
@@ -18,7 +19,7 @@ from typing import Callable, Collection, Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.io.files import input_file_problem, load_netcdf
+from mdr_events.io.files import HDF5_MAGIC, NETCDF3_MAGIC, input_file_problem, load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.validation import (PLAIN_NUMBER, SCALE_MAX, check_mapping, check_real, cut_text, plain_number,
@@ -104,10 +105,19 @@ class UnnamedColumnError(ValueError):
 def unit_factor(quantity: str, unit: str, source: str) -> float:
     """The factor to SI of ``unit`` for ``quantity`` (:data:`UNITS`); ``ValueError`` naming ``source`` else."""
     allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
-    if not isinstance(unit, str) or unit not in allowed:  # (a list is no unit, and unhashable)
+    spelled = unit_spelling(unit) if isinstance(unit, str) else None  # (a list is no unit, and unhashable)
+    if spelled not in allowed:
         raise ValueError(f"{source}: units[{quantity!r}]={shown(unit)} is not allowed; allowed: "
                          f"{', '.join(repr(name) for name in allowed)}")
-    return allowed[unit]
+    return allowed[spelled]
+
+
+def unit_spelling(unit: str) -> str:
+    """``unit`` as :data:`UNITS` spells it: Unicode's compatibility forms folded (NFKC: a superscript ``²`` is ``2``)
+    and the Greek letter mu (U+03BC, what a Greek keyboard and NFKC write) read as the micro sign (U+00B5) the table
+    uses. The two look the same: ``'μm'`` was refused beside an allowed ``'µm'`` that a user could not tell from it,
+    and ``'mm²'`` beside ``'mm2'`` (round 30)."""
+    return unicodedata.normalize("NFKC", unit).replace("\u03bc", "\u00b5")
 
 
 #: Bytes a CSV file's value takes while it is read and afterwards (its float64 in a column, the arrays the validation
@@ -154,14 +164,12 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
         with open(path, newline="", encoding="utf-8-sig") as handle:
             lines = data_lines(handle)
             first = next(lines, "")
-            reader = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(first))
+            mark = _delimiter(first)
+            if mark == " ":  # (columns aligned by any run of blanks, spaces or tabs: fields are the line's words)
+                first, lines = " ".join(first.split()), (" ".join(text.split()) for text in lines)
+            reader = csv.reader(itertools.chain([first], lines), delimiter=mark)
             header = [name.strip() for name in next(reader, [])]
-            if not header:
-                raise ValueError(f"{where}: the file is empty; allowed: a CSV file with a header row")
-            repeated = sorted({name for name in header if header.count(name) > 1})
-            if repeated:
-                raise ValueError(f"{where}: the header names {', '.join(map(repr, repeated))} more than once; allowed: "
-                                 "each column's name once")
+            _check_header(where, line[0], header)
             limits.check(f"reading {where} ({rows} rows of {len(header)} columns)", samples=rows,
                          memory=BYTES_PER_CSV_VALUE * rows * len(header))
             columns = {name: array("d") for name in header}
@@ -182,10 +190,47 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
 def _delimiter(header: str) -> str:
     """What separates the fields of a CSV file whose header row is ``header``: a comma, or where the header holds
     none, a semicolon or a tab in it (a spreadsheet's "CSV" where the decimal mark is a comma; a tab-separated file:
-    round 29 read either as one column ``'t;Fn;Ft;A'`` and refused it, not naming why)."""
+    round 29 read either as one column ``'t;Fn;Ft;A'`` and refused it, not naming why), or else blanks between its
+    words (``' '``: columns aligned with spaces, as LAMMPS's ``fix print`` and Fortran codes write them; round 30
+    read ``'t_ms Fz_mN'`` as one column)."""
     if "," in header:
         return ","
-    return next((mark for mark in (";", "\t") if mark in header), ",")
+    return next((mark for mark in (";", "\t") if mark in header), " " if len(header.split()) > 1 else ",")
+
+
+#: The first word of a LAMMPS dump file (``ITEM: TIMESTEP``), which holds atoms' snapshots, not a run's table.
+LAMMPS_DUMP_HEADER = "ITEM:"
+
+
+def _check_header(where: str, number: int, header: list[str]) -> None:
+    """``ValueError`` naming the file and its line ``number`` where the header row is missing (an empty file), is a
+    LAMMPS dump's (``ITEM: TIMESTEP``), holds numbers only (a file without a header: its first row of data was read
+    as the names) or names a column twice."""
+    if not header:
+        raise ValueError(f"{where}: the file is empty; allowed: a CSV file with a header row")
+    if header[0] == LAMMPS_DUMP_HEADER:
+        shown_header = cut_text(" ".join(header), LISTED_CHARACTERS)
+        raise ValueError(f"{where}: line {number} ({shown_header}) starts a LAMMPS dump (atoms' snapshots), not a "
+                         "table of the run; allowed: a header row and a row per time, as "
+                         "LAMMPS's fix print writes it (title \"t Fn Ft\" and one line per step)")
+    if all(_is_number(name) for name in header):
+        raise ValueError(f"{where}: line {number} ({cut_text(', '.join(header), LISTED_CHARACTERS)}) holds numbers, "
+                         "not the columns' names; allowed: a header row naming the columns before the data (a header "
+                         "written as a comment, '# t Fn', as LAMMPS's fix ave/time writes it, is a comment: remove "
+                         "its '#')")
+    repeated = sorted({name for name in header if header.count(name) > 1})
+    if repeated:
+        raise ValueError(f"{where}: the header names {', '.join(map(repr, repeated))} more than once; allowed: "
+                         "each column's name once")
+
+
+def _is_number(text: str) -> bool:
+    """Whether ``text`` reads as a number (:func:`~mdr_events.validation.plain_number`)."""
+    try:
+        plain_number(text)
+    except ValueError:
+        return False
+    return True
 
 
 def _read_row(where: str, number: int, header: list[str], row: list[str], columns: dict[str, array],
@@ -224,6 +269,29 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
         raise ValueError(f"{where}: {error}") from None
 
 
+#: Bytes of a file read to tell a text table from a netCDF file.
+_SNIFFED_BYTES = 4096
+#: The byte-order marks of UTF-16 text, which spreadsheets save as "Unicode text" (its NUL bytes are no netCDF's).
+UTF16_MARKS = (b"\xff\xfe", b"\xfe\xff")
+
+
+def _is_text(path: Path) -> bool:
+    """Whether the file at ``path`` is a text table whatever its name but ``.nc`` (``run.txt``, ``run.tsv``,
+    ``run.dat``: round 30 read them as netCDF and said they do not start as netCDF does): its first bytes are UTF-8
+    without a NUL byte and not a netCDF-3 or HDF5 file's, or UTF-16 text (:data:`UTF16_MARKS`)."""
+    with open(path, "rb") as handle:
+        head = handle.read(_SNIFFED_BYTES)
+    if head.startswith(UTF16_MARKS):  # (a spreadsheet's "Unicode text": the CSV reader names its encoding)
+        return True
+    if not head or head.startswith((NETCDF3_MAGIC, HDF5_MAGIC)) or b"\0" in head:
+        return False
+    try:
+        head.decode("utf-8")
+    except UnicodeDecodeError as error:  # (a character cut at the end of the bytes read is text)
+        return error.start >= len(head) - 3 and error.reason == "unexpected end of data"
+    return True
+
+
 def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                        select: Mapping[str, object] | None = None,
                        progress: Callable[[str], None] | None = None,
@@ -236,7 +304,8 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
         if problem is not None:
             raise ValueError(f"candidate={shown_path(candidate, quoted=True)}{problem}; allowed: a CSV or netCDF file, "
                              "a Dataset or a mapping of arrays")
-        if path.suffix.lower() == ".csv":  # (the other columns are named, not parsed: any text)
+        # (a text table of any name but .nc; its other columns are named, not parsed: any text)
+        if path.suffix.lower() == ".csv" or (path.suffix.lower() != ".nc" and _is_text(path)):
             return _read_csv(path, limits, progress, {*CANDIDATE_QUANTITIES, *wanted}), {}
         # (loaded whole: the values its header declares count as memory before it is read, as a CSV's rows do)
         candidate = load_netcdf(path, source, "a CSV file with a header or a netCDF-3 file",
@@ -357,8 +426,9 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     Parameters
     ----------
     candidate : xarray.Dataset, mapping of str to array, str or os.PathLike
-        The output: a Dataset (variables by name), a mapping of arrays, or a file (``.csv`` with a header
-        row, lines starting with ``#`` skipped; anything else is read as netCDF).
+        The output: a Dataset (variables by name), a mapping of arrays, or a file: a text table whatever its name
+        (``.csv``, ``.txt``, ``.tsv``, ...; a header row, lines starting with ``#`` skipped, fields separated by
+        commas, else semicolons, tabs or blanks), else netCDF-3 (told by its first bytes).
     names : mapping, optional
         Quantity -> the candidate's column name, for columns not named as in :data:`CANDIDATE_QUANTITIES`.
     units : mapping, optional

@@ -53,6 +53,7 @@ def fill(check: argparse.ArgumentParser) -> None:
 def spacings(args: argparse.Namespace) -> tuple[list[float] | None, str | None]:
     """The spacing of each run for a convergence study: ``--dx`` (one per run), else from every run's file
     name; ``None`` and why not (``None``: nothing to say) where there is no study."""
+    from mdr_events.io.candidates import unit_spelling
     from mdr_events.validation import SCALE_MAX, SCALE_MIN
 
     if args.dx is not None:
@@ -68,7 +69,7 @@ def spacings(args: argparse.Namespace) -> tuple[list[float] | None, str | None]:
                              "one different spacing (m) per run")
         found = list(args.dx)
     else:
-        matches = [SPACING_IN_NAME.search(Path(run).stem) for run in args.runs]
+        matches = [SPACING_IN_NAME.search(unit_spelling(Path(run).stem)) for run in args.runs]  # (μm: µm)
         if len(args.runs) < CONVERGENCE_MIN_RUNS or not all(matches):
             return None, None
         found = [float(match.group(1)) * SPACING_UNITS[match.group(2)] for match in matches]
