@@ -170,3 +170,28 @@ def test_the_stated_reach_of_a_table_is_accepted(works):
     deepest = _stated(r"at most ([0-9.e+-]+) m", lambda: me.simulate(contact, me.Scenario("A", 45.0, 5e-2), "discrete"))
     ds = me.simulate(contact, me.Scenario("A", 45.0, deepest), method=me.Discrete(n_steps=50))
     _every_variable_finite_in_contact(ds)
+
+
+#: The shear strengths (Pa) of a soft layer's run that never slides: the caps ``ū`` lie far beyond every shift.
+UNREACHED_TAU0 = (1e9, 1e12)
+#: How closely two all-stick runs of different (unreached) caps agree: the solver's own relative tolerance.
+ALL_STICK_RTOL = 1e-9
+
+
+def test_a_cap_deeper_than_the_layers_tables_is_past_every_spring():
+    """The review's case (r10, 9): E = 1 kPa on a 5 mm bonded layer with τ0 = 1e9 Pa along A 30° to 1 µm: the springs'
+    fronts were looked up at the depth where a piece reaches its cap, 230 m, beyond the layer's tables (a/h = 64),
+    and the run was refused ("depth=229.57 m is not allowed") though it never goes deeper than 1 µm. A level reached
+    beyond the branch's largest radius lies past every spring of the piece; the run sticks throughout, so its
+    ``F_x`` does not depend on the (unreached) cap."""
+    forces = []
+    for tau0 in UNREACHED_TAU0:
+        contact = me.Contact(SOFT, me.Paraboloid(0.03), me.Adhesion(1e-6, 5e-7), me.FrictionLaw("tau0", tau0=tau0),
+                             me.Layer(5e-3))
+        run = me.simulate(contact, me.Scenario("A", 30, 1e-6), method="continuum")
+        in_contact = run["contact_area"].values > 0
+        assert all(np.all(np.isfinite(run[name].values[in_contact])) for name in run.data_vars
+                   if run[name].dims == run["contact_area"].dims)  # (the means: undefined out of contact)
+        assert in_contact.any() and float(run["sliding_fraction"].max()) == 0.0
+        forces.append(run["tangential_force"].values)
+    np.testing.assert_allclose(forces[0], forces[1], rtol=ALL_STICK_RTOL, atol=0.0)

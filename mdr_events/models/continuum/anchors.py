@@ -145,6 +145,9 @@ class AnchorMap:
     def __init__(self, attach: Branch, rtol: float, pieces: Sequence[Piece] | None = None):
         self.attach = attach
         self.rtol = rtol
+        #: the depth of the branch's largest radius (its :attr:`~.branch.Branch.ceiling`): a level reached deeper lies
+        #: past every spring of a piece (:meth:`inverse`)
+        self.deepest = attach.depth(attach.ceiling) if math.isfinite(attach.ceiling) else math.inf
         self.pieces: Sequence[Piece] = list(pieces or [])
         #: the first this many entries of ``pieces`` are seen by a snapshot (:meth:`copy`): not changed in place
         self._shared = 0
@@ -479,6 +482,8 @@ class AnchorMap:
             The coordinate ``ξ`` (m).
         """
         depth = p.d_ref + (level - p.x0) / p.ratio
+        if depth > self.deepest:  # (beyond the branch's tables, a layer's a/h = 64: past the piece's springs)
+            return self.attach.ceiling
         xi = self.attach.radius(depth, self.rtol)
         return xi if xi == xi else self._unreached(p, depth)
 

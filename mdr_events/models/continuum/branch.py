@@ -58,6 +58,8 @@ class Branch:
     #: the depth at which a growing radius reaches the indenter's edge and stops there (a flat face's on a layer,
     #: :class:`~.layer_punch_branch.LayerPunchBranch`; ``+inf``: it grows on): the planner ends a growing span there
     edge_depth = math.inf
+    #: the largest radius the branch holds (m): none on the half-space; a layer's tables end at ``a/h = 64``
+    ceiling = math.inf
     #: whether :meth:`sample_radii` is the paraboloid's quartic in closed form: this class's own (the paraboloid's
     #: branch); every subclass is ``False`` unless it sets it in its own body (:meth:`__init_subclass__`), so that
     #: a branch of another indenter samples by its own :meth:`radii`
