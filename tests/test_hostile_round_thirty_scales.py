@@ -72,3 +72,58 @@ def test_first_tie_is_the_earliest_value_within_the_tie():
     assert first_tie(np.array([0.5, 0.9]), 1.0, size) == -1
     assert within_tie(1.0 - EXTREMUM_TIE * size, 1.0, size) and not within_tie(1.0 - 1.01 * EXTREMUM_TIE * size, 1.0,
                                                                                    size)
+
+
+#: Round-off of a closed form evaluated at scaled stresses (64 ulps of 1), and of a root of a slope on a layer's
+#: tables: the slope's terms (``a g'``, ``Δl``, ``K d'``, ``a K' Δl``) round to some ulps each and where the least is
+#: shallow they nearly cancel, the root's condition (measured: 1.8e-14 of the radius, 7.9e-13 of the pull-off's depth,
+#: ``g − Δl`` cancelling): 64 eps times 1e4, round 29's ``ROOT_RTOL``.
+ROOT_RTOL = 64 * float(np.finfo(float).eps) * 1e4
+LAYER_CASES = [(me.Paraboloid(PAPER.R), me.Layer(5e-3, "bonded")), (me.Paraboloid(PAPER.R), me.Layer(1e-3, "frictionless")),
+               (me.PowerLaw(c=50.0, n=3.0), me.Layer(5e-4, "bonded")), (me.PowerLaw(c=1.0, n=1.0), me.Layer(5e-2, "bonded"))]
+
+
+def _layer_contact(profile, layer, stress: float) -> me.Contact:
+    return me.Contact(me.Elastomer(PAPER.E * stress, PAPER.nu), profile,
+                      me.Adhesion(PAPER.dgamma0 * stress, PAPER.dgamma1 * stress),
+                      FrictionLaw("tau0", tau0=PAPER.tau0 * stress), layer)
+
+
+def _flat_leasts(profile, layer, stress: float) -> np.ndarray:
+    """The jump-off (radius, depth, force / λ), the pull-off under force control (radius, depth, force / λ) and, on a
+    bonded base, scenario B's critical angle (its scan ends at the jump-off) of the paper's set on ``layer``."""
+    from mdr_events.theory.layer import pull_off
+
+    contact = _layer_contact(profile, layer, stress)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        jump = me.jump_off(contact, contact.adhesion.dgamma1)
+        pulled = pull_off(profile, contact.elastomer.E_star, PAPER.nu, contact.adhesion.dgamma1, layer)
+        angle = me.critical_angle(contact, "B", d_max=PAPER.d_max) if layer.base == me.LayerBase.BONDED else 0.0
+    return np.array([jump["contact_radius"], jump["depth"], jump["normal_force"] / stress, pulled.radius, pulled.depth,
+                     pulled.force / stress, angle])
+
+
+@pytest.mark.parametrize("stress", [1e-140, 3.7e5, 1e148])
+@pytest.mark.parametrize("case", range(len(LAYER_CASES)))
+def test_layer_jump_off_and_pull_off_are_free_of_the_stress_scale(case, stress):
+    """A least (the jump-off's depth, the pull-off's force) is flat: Brent's minimiser placed its radius anywhere
+    within ~√ε of it, so that the stress scaling, which leaves every length unchanged, moved the jump-off radius and
+    force by up to 5.7e-8, the pull-off's radius by 2.5e-8 and depth by 3.7e-6, scenario B's critical angle by 1.3e-8.
+    At the root of the slope they are unchanged to the root's round-off."""
+    profile, layer = LAYER_CASES[case]
+    np.testing.assert_allclose(_flat_leasts(profile, layer, stress), _flat_leasts(profile, layer, 1.0),
+                               rtol=ROOT_RTOL, atol=0.0)
+
+
+@pytest.mark.parametrize("radius", [0.01, 0.03, 0.1])
+@pytest.mark.parametrize("work", [0.01, 0.15, 1.0])
+def test_half_space_pull_off_radius_is_the_closed_form(radius, work):
+    """On the half-space the pull-off radius under force control of the paraboloid is ``(9π Δγ R²/(8E*))^(1/3)``
+    (JKR): the minimiser gave it to 7e-10 .. 1.5e-8, the slope's root to round-off."""
+    from mdr_events.theory.layer import pull_off
+
+    E_star = PAPER.E / (1.0 - PAPER.nu ** 2)
+    found = pull_off(me.Paraboloid(radius), E_star, PAPER.nu, work, me.Layer())
+    exact = (9.0 * np.pi * work * radius ** 2 / (8.0 * E_star)) ** (1.0 / 3.0)
+    assert found.radius == pytest.approx(exact, rel=64 * float(np.finfo(float).eps), abs=0.0)
