@@ -61,6 +61,7 @@ from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import PlaySprings, SpanHistory, spring_line
 from .solution import contact_radii
 from .solve import run_continuum
+from .span_extrema import first_tie, within_tie
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
@@ -573,7 +574,8 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
     corners (``at_corners``: the corners inside ``times``' span and ``F_x`` there, where it has kinks), the best
     refined between its neighbours (a corner not: its sides are pieces the brackets cover), and each of ``brackets``
     (:func:`_slope_brackets`: ``(low, high, sign)``) of its kind that does not hold that refined time refined on its
-    own, the best kept."""
+    own; of all these points the earliest that ties the best (:func:`_earliest_tie`), as every extremum of the
+    continuum is read (:func:`~.span_extrema.within_tie`)."""
     out, duration = {}, path.duration
     corners, at_corners = at_corners
     order = np.argsort(np.concatenate([times, corners]), kind="stable")
@@ -582,7 +584,7 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         k = int(np.argmax(sign * force))
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
-        refined_at = None  # (where the best's refinement found a better F_x: a local extremum of its bracket)
+        refined_at, found = None, []  # (where the best's refinement found a better F_x: a local extremum of its bracket)
         # (at a corner F_x kinks but may go on growing past it, as where the depth turns and x does not: issue 32
         # round 27 Z4; the corner is an end of the pieces on each side, whose interior extrema the one-sided slopes
         # there and the scan's differences bracket (_slope_brackets, refined below), so a corner is not refined
@@ -592,16 +594,34 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
                 and not _monotone(play, np.unique([low, time, high]) + start)):
             refined, at = _refined(play, sign, low, high, start, duration)
             if sign * refined > sign * value:
-                value, time, refined_at = refined, at, at
+                found.append((at, refined))
+                refined_at = at
         # (a bracket that holds the refined extremum holds no other, F_x unimodal there: _slope_brackets)
         for a, b in [(a, b) for a, b, side in brackets if side == sign
                      and not (refined_at is not None and a < refined_at < b)]:
             refined, at = _refined(play, sign, a, b, start, duration)
-            if sign * refined > sign * value:
-                value, time = refined, at
+            found.append((at, refined))
         value_name, time_name = extremum_names("tangential_force", kind)
-        out[value_name], out[time_name] = value, time
+        out[time_name], out[value_name] = _earliest_tie(times, force, found, sign)
     return out
+
+
+def _earliest_tie(times: np.ndarray, force: np.ndarray, found: list[tuple[float, float]],
+                  sign: float) -> tuple[float, float]:
+    """The earliest ``(time, F_x)`` of the samples (``times``, sorted, and ``force``) and the refined points
+    (``found``) that ties the best of them (:func:`~.span_extrema.within_tie`: :data:`~.span_extrema.EXTREMUM_TIE` of
+    ``F_x``'s largest magnitude along the run), ``sign`` +1 for the largest, −1 for the least. The model holds
+    ``F_x`` constant where every spring sticks and ``x`` rests (a corner of A's path under the rate law: the springs
+    attaching at a growing edge carry nothing), but the quadrature reads such a plateau to its rounding (measured
+    1e-13 of ``F_x``), so its best sample was any of the plateau's and moved with every exact scaling of the run
+    (issue 32 round 30: 9e-2 of the run under ``E, τ0, Δγ → 1e148 ·``); the earliest tie is the plateau's start, as
+    the spans' extrema and the rate run's read theirs."""
+    signed = sign * force
+    best = max([float(np.max(signed))] + [sign * value for _, value in found])
+    size = float(np.fmax.reduce(np.abs(force), initial=0.0))
+    first = first_tie(signed, best, size)
+    tied = [(float(times[first]), float(force[first]))] if first >= 0 else []
+    return min(tied + [(at, value) for at, value in found if within_tie(sign * value, best, size)])
 
 
 def _refined(play: PlaySprings, sign: float, low: float, high: float, start: float,

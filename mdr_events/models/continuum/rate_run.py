@@ -45,7 +45,7 @@ from .rate_edge import EdgeEventKind
 from .rate_play import RatePlay
 from .rate_shifts import RateShifts, solve_rate_shifts
 from .time_grid import sample_times
-from .span_extrema import within_tie
+from .span_extrema import first_tie, within_tie
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
 from .stationary import chebyshev_nodes, derivative_roots
@@ -431,7 +431,7 @@ def _earliest_tie(values: np.ndarray, sign: float, size: float) -> int:
     not at the sample its rounding happens to raise (round 29: the time of ``F_x``'s largest moved by 4e-4 of the
     run under a time scaling of the speeds and ``v_ref``, by 0.28 under a stress scaling)."""
     best = -sign * float(values[int(np.argmin(sign * values))])
-    return next(index for index, value in enumerate(values) if within_tie(-sign * float(value), best, size))
+    return first_tie(-sign * values, best, size)
 
 
 def check_rate_layer(layer: Layer) -> None:

@@ -23,7 +23,7 @@ from .state import Regime
 from .stationary import never_stationary, stationary_points
 
 __all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "ExtremumScan", "ScanMatrix",
-           "extremum", "scan_spans", "within_tie"]
+           "extremum", "first_tie", "scan_spans", "within_tie"]
 
 #: Quantities :func:`extremum` finds the extremes of; the means are per contact area ``π a²``.
 EXTREMUM_QUANTITIES = ("normal_force", "tangential_force", "contact_radius", "contact_area",
@@ -58,6 +58,13 @@ def within_tie(value: float, best: float, size: float) -> bool:
         ``True`` if ``value >= best − EXTREMUM_TIE · max(size, |best|)``.
     """
     return value >= best - EXTREMUM_TIE * max(size, abs(best))
+
+
+def first_tie(values: np.ndarray, best: float, size: float) -> int:
+    """The index of the first of ``values`` (signed so that larger is better, in time order) that ties ``best``
+    (:func:`within_tie`), or ``-1`` if none does: where a run's extremum is read, the earliest of its ties."""
+    tied = within_tie(np.asarray(values, dtype=float), best, size)
+    return int(np.argmax(tied)) if tied.any() else -1
 
 
 def _quantity(filled: dict[str, np.ndarray] | _ScanTables, quantity: str) -> np.ndarray:

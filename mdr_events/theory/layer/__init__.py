@@ -70,6 +70,7 @@ module                            one idea
                                   :func:`mdr_events.jump_off` and ``pull_off_force`` run on a layer)
 :mod:`.checks`                    what the relations take and give, checked: arguments by name, finite results
 :mod:`.branch_scan`               a branch scanned in ``ln a``: a depth inverted on its stable part, its least depth
+:mod:`.branch_slopes`             the slopes of a branch's depth and force in ``ln a``; a flat least at its slope's root
 :mod:`.curves`                    a :class:`~mdr_events.Contact` on its layer as labelled results: the branches against
                                   the depth, an indentation cycle, the pull-off against the thickness
 :mod:`.tangential_compliance`     the tangential compliances ``C_L``, ``C_T`` and the kernels of the tangential punch

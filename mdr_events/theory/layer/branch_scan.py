@@ -21,6 +21,7 @@ from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
+from mdr_events.theory.layer.branch_slopes import depth_slope, flat_least
 from mdr_events.theory.layer.relations import _abel_factor, _power_law, branch_depth
 from mdr_events.validation import SCALE_MAX, SCALE_MIN, shown
 
@@ -250,8 +251,8 @@ def stable_radius(contact: Contact, dgamma: float, depths: np.ndarray) -> np.nda
 def branch_jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
     """The least depth of the branch of ``dgamma`` and its radius: the jump-off under depth control (m, m).
 
-    ``∂d/∂a = 0`` on ``d(a) = g(a) − Δl(a)`` (generalised (9)): a scan in ``ln a`` and Brent's method around its
-    least node.
+    ``∂d/∂a = 0`` on ``d(a) = g(a) − Δl(a)`` (generalised (9)): a scan in ``ln a`` and the root of the slope
+    (:func:`~.branch_slopes.flat_least`) around its least node.
 
     Parameters
     ----------
@@ -284,7 +285,10 @@ def branch_jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
     def depth_of(log_radius):
         return branch_depth(np.exp(log_radius), contact.indenter, E_star, nu, dgamma, layer)
 
-    least, at_least = _least(depth_of, logs, int(np.argmin(depth_of(logs))))
+    def slope_of(log_radius):
+        return depth_slope(math.exp(log_radius), contact.indenter, E_star, nu, dgamma, layer)
+
+    least, at_least = flat_least(depth_of, slope_of, logs, int(np.argmin(depth_of(logs))))
     return least, float(np.exp(at_least))
 
 

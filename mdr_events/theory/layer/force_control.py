@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mdr_events.contact.layer import Layer
+from mdr_events.theory.layer.branch_slopes import flat_least, force_slope
 from mdr_events.theory.layer.checks import checked_relation
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.relations import _abel_factor, _power_law, _relative, branch_depth, branch_normal_force
@@ -42,7 +43,7 @@ class PullOff:
 
 
 #: Points of the scan of the branch force for its minimum, over ``a₀ · 10^[-3, 3]`` (``a₀`` the half-space's
-#: pull-off radius), before Brent's refinement.
+#: pull-off radius), before the root of its slope (:func:`~.branch_slopes.flat_least`).
 _SCAN_POINTS = 241
 
 
@@ -53,8 +54,8 @@ def pull_off(profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> 
     .. math:: F_\mathrm{po} = \min_a\,[F_0(a) - K(a)\,\Delta l(a)] \qquad (10)
 
     (``−(3/2) π Δγ R`` for the paraboloid on the half-space). The branch is scanned on a logarithmic grid around the
-    half-space's pull-off radius ``a₀`` (``a^(2n−1) = 9Δγ/(2E* n² κₙ² c²)``) and its minimum refined by Brent's
-    method in ``ln a``.
+    half-space's pull-off radius ``a₀`` (``a^(2n−1) = 9Δγ/(2E* n² κₙ² c²)``) and its minimum placed at the root of
+    the force's slope in ``ln a`` (:func:`~.branch_slopes.flat_least`).
 
     Parameters
     ----------
@@ -81,8 +82,6 @@ def pull_off(profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> 
     ValueError
         ``dgamma`` not > 0, or the minimum beyond the table (``a/h > LAMBDA_MAX``).
     """
-    from scipy.optimize import minimize_scalar
-
     dgamma = check_real("dgamma", dgamma, "a finite number > 0 (J/m²)", lambda value: value > 0.0)
     c, n = _power_law(profile)
     a0 = (9.0 * dgamma / (2.0 * E_star * n**2 * _abel_factor(n) ** 2 * c**2)) ** (1.0 / (2.0 * n - 1.0))
@@ -97,8 +96,8 @@ def pull_off(profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> 
     if best in (0, len(logs) - 1):
         raise ValueError(f"the pull-off radius lies beyond a/h = {LAMBDA_MAX:g} or outside a0·10^±3 (a0 = {a0:.6g} m "
                          f"on the half-space); allowed: a layer with h > {a0 / LAMBDA_MAX:.3g} m or so")
-    found = minimize_scalar(lambda value: float(force(value)), bracket=(logs[best - 1], logs[best], logs[best + 1]),
-                            method="brent", options={"xtol": 1e-12})
-    radius = float(np.exp(found.x))
-    return PullOff(radius, float(branch_depth(radius, profile, E_star, nu, dgamma, layer)), float(found.fun),
+    least, at = flat_least(lambda value: float(force(value)),
+                           lambda value: force_slope(math.exp(value), profile, E_star, nu, dgamma, layer), logs, best)
+    radius = float(np.exp(at))
+    return PullOff(radius, float(branch_depth(radius, profile, E_star, nu, dgamma, layer)), least,
                    float(_relative(radius, layer)))

@@ -190,25 +190,27 @@ class LayerTable:
         """
         return self._value("stiffness", lam)
 
-    def edge_factor(self, lam) -> np.ndarray:
-        """``Θ(1; λ)``: ``K'(a) = 2E* Θ(1)²`` (L3).
+    def edge_factor(self, lam, derivative: bool = False) -> np.ndarray:
+        """``Θ(1; λ)``: ``K'(a) = 2E* Θ(1)²`` (L3), or its derivative in ``λ``.
 
         Parameters
         ----------
         lam : float or array_like
             ``a/h`` in ``[0, LAMBDA_MAX]``.
+        derivative : bool, default False
+            ``dΘ(1)/dλ`` instead (the spline's derivative: the slope of the interpolant :meth:`edge_factor` reads).
 
         Returns
         -------
         numpy.ndarray
-            ``Θ(1)`` (1 at ``λ = 0``).
+            ``Θ(1)`` (1 at ``λ = 0``) or its derivative.
 
         Raises
         ------
         ValueError
             ``λ`` outside the table.
         """
-        return self._value("edge", lam)
+        return self._value("edge", lam, derivative)
 
     def profile_factor(self, lam, derivative: bool = False) -> np.ndarray:
         """``γₙ(λ) = g(a)/g∞(a)`` of the power law (L4), or its derivative in ``λ``.
