@@ -1,0 +1,95 @@
+"""Hostile round thirty (issue 32), the statistical referees: the convergence study's verdict must be earned.
+
+Class found: an error that stops falling at the finest spacing was reported ``converges`` (five spacings whose last
+error equals the one before: the least-squares order over all of them, 0.80 ± 0.12, passed ``order − 2·spread ≥
+0.5``). The rule now also asks the slope through the two finest usable spacings (``*_finest_order``) to reach
+``CONVERGES_SHARE · expected_order``. The candidates here are the exact continuum scaled by ``1 + K·Δx``: each
+quantity's error is then exactly proportional to ``Δx`` (first order), and any spacing may be given another's run.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.analysis.convergence_study import CONVERGES_SHARE, NORMS, convergence_study, fit_observed_order
+
+ALPHA = 20.0
+QUANTITIES = ("normal_force", "tangential_force", "contact_area")
+#: The candidate's relative error per metre of spacing: 1 % at Δx = 10 µm (a spring model's size of error).
+ERROR_PER_METRE = 1e3
+#: The spacings of a study, coarsest first (m): factors of two, as a user refines.
+SPACINGS = (32e-6, 16e-6, 8e-6, 4e-6, 2e-6, 1e-6)
+#: The slope through two exact points is exact up to the rounding of two logarithms.
+SLOPE_ROUNDING = 1e-9
+
+
+@pytest.fixture(scope="module")
+def exact():
+    run = me.simulate(me.Contact.paper(), me.Scenario("A", alpha=[ALPHA]), "continuum").sel(alpha=ALPHA)
+    return {"time": run["time"].values, **{name: run[name].values for name in QUANTITIES}}
+
+
+def _candidate(exact, dx: float) -> dict:
+    """The exact curves with a relative error ``ERROR_PER_METRE · dx``: first order in ``dx``, contact unchanged."""
+    return {"time": exact["time"], **{name: exact[name] * (1.0 + ERROR_PER_METRE * dx) for name in QUANTITIES}}
+
+
+def _study(exact, errors_at: list[float]):
+    """A study over :data:`SPACINGS` (as many as ``errors_at``), spacing i given the run of spacing ``errors_at[i]``."""
+    spacings = SPACINGS[:len(errors_at)]
+    return convergence_study({dx: _candidate(exact, at) for dx, at in zip(spacings, errors_at)},
+                             me.Contact.paper(), "A", ALPHA)
+
+
+def test_first_order_errors_converge_with_finest_order_one(exact):
+    study = _study(exact, list(SPACINGS[:5]))
+    assert study.attrs["verdict"] == "converges"
+    for norm in NORMS:
+        np.testing.assert_allclose(study[f"{norm}_finest_order"].values, 1.0, atol=1e-6)
+        assert np.all(study[f"{norm}_converges"].values == 1), norm
+
+
+@pytest.mark.parametrize("errors_at", [
+    # five spacings, the finest run the same as the one before (its error does not fall): order 0.80 ± 0.12 passed
+    [32e-6, 16e-6, 8e-6, 4e-6, 4e-6],
+    # six spacings, the same
+    [32e-6, 16e-6, 8e-6, 4e-6, 2e-6, 2e-6],
+    # six spacings, the finest error twice the one before (it rose)
+    [32e-6, 16e-6, 8e-6, 4e-6, 2e-6, 4e-6],
+    # the error falls by only 10 % at the finest halving (a local order of 0.15)
+    [32e-6, 16e-6, 8e-6, 4e-6, 2e-6, 1.8e-6],
+], ids=["5-flat", "6-flat", "6-rises", "6-stalls"])
+def test_an_error_that_stops_falling_at_the_finest_spacing_does_not_converge(exact, errors_at):
+    study = _study(exact, errors_at)
+    assert study.attrs["verdict"] == "does not converge", study.attrs["verdict"]
+    for norm in NORMS:
+        assert np.all(study[f"{norm}_converges"].values == 0), norm
+        finest = math.log(errors_at[-1] / errors_at[-2]) / math.log(SPACINGS[len(errors_at) - 1]
+                                                                     / SPACINGS[len(errors_at) - 2])
+        np.testing.assert_allclose(study[f"{norm}_finest_order"].values, finest, atol=1e-6)
+    assert "finest order" in study.attrs["converges_rule"]
+
+
+def test_the_coarse_spacings_outside_the_asymptotic_range_still_converge(exact):
+    """The coarsest step flat (not yet asymptotic), the finest ones first order: converges (the finest step decides
+    beside the overall order, not every step)."""
+    study = _study(exact, [16e-6, 16e-6, 8e-6, 4e-6, 2e-6])
+    assert study.attrs["verdict"] == "converges"
+
+
+def test_the_finest_order_is_the_slope_through_the_two_finest_usable_spacings():
+    fit = fit_observed_order([4.0, 2.0, 1.0, 0.5], [8.0, 4.0, 2.0, 2.0])
+    assert abs(fit.finest_order) < SLOPE_ROUNDING and fit.order > CONVERGES_SHARE
+    # a 0 or nan error is left out: the finest usable pair is the next one
+    fit = fit_observed_order([4.0, 2.0, 1.0, 0.5], [8.0, 4.0, 2.0, 0.0])
+    assert abs(fit.finest_order - 1.0) < SLOPE_ROUNDING
+    fit = fit_observed_order([0.5, 4.0, 1.0, 2.0], [math.nan, 16.0, 1.0, 4.0])  # any order of the spacings
+    assert abs(fit.finest_order - 2.0) < SLOPE_ROUNDING
+    assert math.isnan(fit_observed_order([1.0, 2.0, 4.0], [math.nan, 0.0, 5.0]).finest_order)
+    # a repeated spacing: its errors averaged in log (no division by a zero step)
+    fit = fit_observed_order([1.0, 1.0, 2.0], [1.0, 4.0, 8.0])
+    assert abs(fit.finest_order - 2.0) < SLOPE_ROUNDING
