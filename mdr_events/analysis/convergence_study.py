@@ -317,8 +317,8 @@ def _verdict(data: dict[str, tuple]) -> ConvergenceVerdict:
 
 register_schema(CONVERGENCE_STUDY_CONTENT, {
     **{key: ("dx", "quantity") for key in NORMS},
-    **{f"{key}_{part}": ("quantity",) for key in NORMS
-       for part in ("order", "order_spread", "finest_order", "converges")},
+    # (not *_finest_order: a study written before it is read as before)
+    **{f"{key}_{part}": ("quantity",) for key in NORMS for part in ("order", "order_spread", "converges")},
     **{f"{key}_fitted": ("dx", "quantity") for key in NORMS},
     "event_time_error": ("dx", "event"), "event_depth_error": ("dx", "event"),
     "event_time_error_order": ("event",), "event_depth_error_order": ("event",),
