@@ -283,7 +283,8 @@ def natural_intervals(free: FreeParameters, theta: np.ndarray, standard_error: n
     Returns
     -------
     value, standard_error, lower, upper : numpy.ndarray
-        In natural units; a log-scaled parameter's interval is asymmetric, ``(0, inf)`` where the data do not see it.
+        In natural units; a log-scaled parameter's interval is asymmetric, ``(0, inf)`` where the data do not see it;
+        every interval within the parameter's bounds (``ν`` at most 0.5, ``bounds=``).
     """
     from scipy import stats  # (only here: scipy.stats costs the verbs that load the fit's schema ~0.2 s)
 
@@ -302,7 +303,10 @@ def natural_intervals(free: FreeParameters, theta: np.ndarray, standard_error: n
             natural_error.append(scale * standard_error[j])
             lower.append(value[j] - scale * half)
             upper.append(value[j] + scale * half)
-    return value, np.array(natural_error), np.array(lower), np.array(upper)
+    # (within the bounds: the fit holds the parameter there, so no value beyond them is a plausible one; round thirty:
+    # ν fitted at its bound 0.5 was reported within [0.4958, 0.5042])
+    lower, upper = np.maximum(np.array(lower), free.lower), np.minimum(np.array(upper), free.upper)
+    return value, np.array(natural_error), lower, upper
 
 
 def effective_moduli(free: FreeParameters, theta: np.ndarray, covariance: np.ndarray,
