@@ -17,7 +17,11 @@ Rules:
 - with fewer than 2 usable spacings there is no fit (order, spread and fitted values ``nan``); with
   exactly 2 the order is the slope through them and the spread is ``nan`` (no degree of freedom left);
 - a row **converges** when ``order − 2·spread ≥ CONVERGES_SHARE · expected_order`` (a ``nan`` spread
-  counts as 0): the error shrinks at least at half the expected rate, with two standard errors to spare.
+  counts as 0): the error shrinks at least at half the expected rate, with two standard errors to spare;
+  **and** when its **finest order** (the slope through the two finest usable spacings alone) is at least
+  ``CONVERGES_SHARE · expected_order`` too: an error that stops falling at the finest spacing (a floor, a run
+  that no longer refines) is not converging, however well the coarser spacings fell (five spacings whose last
+  error equals the one before fitted an order of 0.8 ± 0.12 and passed the first rule alone).
   A row without a fit does not converge;
 - the **verdict** (attribute) reads the norms only (max, RMS and L1 of every quantity): ``"converges"``
   when each of them with a fit converges, ``"does not converge"`` when one with a fit does not,
@@ -63,7 +67,8 @@ SPREAD_FACTOR = 2.0
 #: The fewest spacings a study accepts.
 MIN_SPACINGS = 3
 CONVERGES_RULE = (f"order - {SPREAD_FACTOR:g} * spread >= {CONVERGES_SHARE:g} * expected_order "
-                  "(spread nan counts as 0; no fit: does not converge)")
+                  f"(spread nan counts as 0) and finest order >= {CONVERGES_SHARE:g} * expected_order (the slope "
+                  "through the two finest usable spacings: the error still falls there); no fit: does not converge")
 
 
 class OrderFit(NamedTuple):
@@ -77,6 +82,8 @@ class OrderFit(NamedTuple):
     """``C Δx^order`` at each of the spacings given (``nan`` without a fit)."""
     points: int
     """How many spacings entered the fit."""
+    finest_order: float = math.nan
+    """The slope through the two finest usable spacings alone (``nan``: fewer than 2 usable points)."""
 
 
 def fit_observed_order(spacings, errors) -> OrderFit:
@@ -92,7 +99,8 @@ def fit_observed_order(spacings, errors) -> OrderFit:
     Returns
     -------
     OrderFit
-        The order ``p``, its standard error, ``C Δx^p`` at every spacing given, and the number of points used.
+        The order ``p``, its standard error, ``C Δx^p`` at every spacing given, the number of points used and the
+        finest order (the slope through the two finest usable spacings).
     """
     dx = np.asarray(spacings, dtype=float)
     magnitude = np.abs(np.asarray(errors, dtype=float))
@@ -115,14 +123,20 @@ def fit_observed_order(spacings, errors) -> OrderFit:
     spread = float(math.sqrt(np.sum(residuals**2) / (points - 2) / sxx)) if points > 2 else math.nan
     with np.errstate(divide="ignore", invalid="ignore"):
         fitted = np.where(dx > 0, np.exp(intercept + order * np.log(np.where(dx > 0, dx, 1.0))), np.nan)
-    return OrderFit(order, spread, fitted, points)
+    # (the two finest distinct usable spacings, sxx > 0 above: at least two; a repeated one's errors averaged)
+    finest = np.unique(x)[:2]
+    finest_error = [float(np.mean(y[x == spacing])) for spacing in finest]
+    finest_order = (finest_error[1] - finest_error[0]) / float(finest[1] - finest[0])
+    return OrderFit(order, spread, fitted, points, finest_order)
 
 
-def _converges(order: float, spread: float, expected_order: float) -> bool:
-    if not math.isfinite(order):
+def _converges(fit: OrderFit, expected_order: float) -> bool:
+    """The module's rule: the fitted order, less :data:`SPREAD_FACTOR` spreads, and the finest order each at least
+    :data:`CONVERGES_SHARE` of the expected order."""
+    if not (math.isfinite(fit.order) and math.isfinite(fit.finest_order)):
         return False
-    margin = SPREAD_FACTOR * spread if math.isfinite(spread) else 0.0
-    return order - margin >= CONVERGES_SHARE * expected_order
+    margin = SPREAD_FACTOR * fit.spread if math.isfinite(fit.spread) else 0.0
+    return min(fit.order - margin, fit.finest_order) >= CONVERGES_SHARE * expected_order
 
 
 def _spacings(candidates_by_dx) -> list[float]:
@@ -190,7 +204,8 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
         quantity's range); ``event_time_error`` (s) and ``event_depth_error`` (m) (``dx`` × ``event``,
         absolute values); ``pull_off_force_error`` (N, ``dx``, absolute value). For each of these
         errors ``E``: ``E_order`` (the observed order, along ``quantity`` / ``event`` / scalar),
-        ``E_order_spread`` (its standard error), ``E_converges`` (1: yes) and ``E_fitted`` (the fitted
+        ``E_order_spread`` (its standard error), ``E_finest_order`` (the slope through the two finest usable
+        spacings), ``E_converges`` (1: yes) and ``E_fitted`` (the fitted
         line ``C Δx^order`` at each spacing, same dims and unit as ``E``). Also ``expected_order``,
         ``samples_compared``, ``samples_left_out`` and ``validation_verdict`` (1: pass; per ``dx``) and
         ``event_time_relative_error`` (``dx`` × ``event``: validate's, ``nan`` not compared). Attributes ``verdict``
@@ -256,12 +271,15 @@ def _fitted_variables(data: dict, key: str, values: np.ndarray, dx: np.ndarray, 
     shape = values.shape[1:]
     orders = np.array([fit.order for fit in fits]).reshape(shape)
     spreads = np.array([fit.spread for fit in fits]).reshape(shape)
-    flags = np.array([_converges(fit.order, fit.spread, expected_order) for fit in fits], dtype=np.int8).reshape(shape)
+    finest = np.array([fit.finest_order for fit in fits]).reshape(shape)
+    flags = np.array([_converges(fit, expected_order) for fit in fits], dtype=np.int8).reshape(shape)
     fitted = np.stack([fit.fitted for fit in fits], axis=1).reshape(values.shape)
     data[f"{key}_order"] = (dims, orders, {"units": "1", "long_name": f"observed order of the {row_text}: "
                                            "least-squares slope of log(error) against log(dx)"})
     data[f"{key}_order_spread"] = (dims, spreads, {"units": "1", "long_name": f"standard error of the observed "
                                                    f"order of the {row_text}"})
+    data[f"{key}_finest_order"] = (dims, finest, {"units": "1", "long_name": f"observed order of the {row_text} "
+                                                  "between the two finest usable spacings alone"})
     data[f"{key}_converges"] = (dims, flags, {"units": "1", "long_name": f"the {row_text} converges (1: yes): "
                                               f"{CONVERGES_RULE}"})
     data[f"{key}_fitted"] = (("dx", *dims), fitted, {"units": unit, "long_name": f"fitted {row_text}, C dx**order"})
@@ -299,6 +317,7 @@ def _verdict(data: dict[str, tuple]) -> ConvergenceVerdict:
 
 register_schema(CONVERGENCE_STUDY_CONTENT, {
     **{key: ("dx", "quantity") for key in NORMS},
+    # (not *_finest_order: a study written before it is read as before)
     **{f"{key}_{part}": ("quantity",) for key in NORMS for part in ("order", "order_spread", "converges")},
     **{f"{key}_fitted": ("dx", "quantity") for key in NORMS},
     "event_time_error": ("dx", "event"), "event_depth_error": ("dx", "event"),

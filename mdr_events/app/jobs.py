@@ -310,9 +310,11 @@ class ValidateJob:
         if "max_error_order" in dataset:
             orders = dataset["max_error_order"]
             spreads = dataset.get("max_error_order_spread", orders * math.nan)
-            lines.append("  observed order of the max error: " + ", ".join(
-                f"{name} {float(orders.sel(quantity=name)):.2f} ± {float(spreads.sel(quantity=name)):.2f}"
-                for name in orders["quantity"].values)
+            # (the finest step's order beside: an error that stops falling there does not converge)
+            finest = dataset.get("max_error_finest_order", orders * math.nan)
+            lines.append("  observed order of the max error (and between the two finest spacings): " + ", ".join(
+                f"{name} {float(orders.sel(quantity=name)):.2f} ± {float(spreads.sel(quantity=name)):.2f} "
+                f"({float(finest.sel(quantity=name)):.2f})" for name in orders["quantity"].values)
                 + (f" (expected {float(dataset['expected_order']):g})" if "expected_order" in dataset else ""))
         return Convergence(dataset, png, lines)
 
