@@ -17,7 +17,7 @@ import xarray as xr
 from mdr_events._version import __version__
 from mdr_events.analysis.sweep_runs import ERROR_CHARACTERS, HISTORY_QUANTITIES, QUANTITIES, ChunkResult
 from mdr_events.io.files import check_output_file, prepare_output_directory
-from mdr_events.validation import shown, shown_text
+from mdr_events.validation import shown, shown_path
 from mdr_events.io.paths import make_directories
 
 __all__ = ["Store", "run_variables", "BYTES_PER_STORE_RUN", "BYTES_PER_SIGNATURE_RUN", "BYTES_PER_SIGNATURE_VALUE",
@@ -96,8 +96,9 @@ def check_same_version(path: str, attrs: dict) -> None:
     written = attrs.get(VERSION_ATTRIBUTE)
     if written != __version__:
         by = ("an earlier mdr_events that did not record its version" if written is None else
-              f"mdr_events {shown_text(written) if isinstance(written, str) else shown(written)}")
-        raise ValueError(f"store={path!r} was written by {by}, not by this mdr_events {__version__} (its runs would "
+              f"mdr_events version {shown(written)}")
+        raise ValueError(f"store={shown_path(path, quoted=True)} was written by {by}, not by this mdr_events "
+                         f"{__version__} (its runs would "
                          "mix with this version's); allowed: resume=False (--restart) to run it afresh with this "
                          "version, or resume it with the version that wrote it")
 
