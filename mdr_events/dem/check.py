@@ -13,10 +13,10 @@ from mdr_events.theory.job import rate_independent
 from mdr_events.analysis.validate import (BYTES_PER_VALIDATED_SAMPLE, DEFAULT_TOLERANCE, one_path, one_path_job,
                                           validate)
 from mdr_events.contact import Contact
-from mdr_events.dem.deck import OUTPUT_COLUMNS, steps_for
+from mdr_events.dem.deck import OUTPUT_COLUMNS
 from mdr_events.dem.mapping import LammpsModel, check_model
 from mdr_events.io.candidates import BYTES_PER_CSV_VALUE
-from mdr_events.dem.runner import run_lammps
+from mdr_events.dem.runner import check_run_limits, run_lammps
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.motion import Paths
 from mdr_events.models.paths import Path
@@ -64,8 +64,10 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
     # (LAMMPS's granular models hold a work of adhesion that does not depend on the edge's speed)
     rate_independent(contact, "the LAMMPS check (its granular models are rate independent)")
     path, _ = one_path(one_path_job(contact, motion, alpha, {}, caller="the LAMMPS check"))
-    # (the run's samples validated beside the run: counted before LAMMPS runs, not refused by validate after it)
-    count, limits = steps_for(path, steps, dt)[0] + 1, check_limits(limits)
+    # (the run's own limits first, then its samples validated beside it: counted before LAMMPS runs, not refused by
+    # validate after it)
+    limits = check_limits(limits)
+    count = check_run_limits(path, steps, dt, limits)[0] + 1
     limits.check(f"validating the LAMMPS run's {count} samples",
                  memory=count * (BYTES_PER_VALIDATED_SAMPLE + BYTES_PER_CSV_VALUE * len(OUTPUT_COLUMNS)))
     run = run_lammps(contact, path, model.normal, model.tangential, steps=steps, dt=dt, limits=limits)

@@ -30,8 +30,8 @@ from mdr_events.models import indenters
 from mdr_events.models.paths import Path
 from mdr_events.validation import shown
 
-__all__ = ["LammpsUnavailable", "LammpsError", "load_lammps", "run_deck", "run_lammps", "LAMMPS_RUN_CONTENT",
-           "EXTRA"]
+__all__ = ["LammpsUnavailable", "LammpsError", "load_lammps", "run_deck", "run_lammps", "check_run_limits",
+           "LAMMPS_RUN_CONTENT", "EXTRA"]
 
 #: The optional extra that installs LAMMPS.
 EXTRA = "mdr_events[lammps]"
@@ -148,6 +148,16 @@ def _dataset(table: np.ndarray, contact: Contact, path: Path, attrs: dict[str, A
                  path_waypoints=path.describe(), path_speed=path.speed, time_origin="path_start", **attrs)
 
 
+def check_run_limits(path: Path, steps: int | None, dt: float | None, limits: Limits) -> tuple[int, float]:
+    """The LAMMPS run's steps and time step along ``path`` (:func:`~mdr_events.dem.deck.steps_for`), its steps, samples
+    and the table it reads back (:data:`~mdr_events.io.candidates.BYTES_PER_CSV_VALUE` a value) checked against
+    ``limits`` before LAMMPS starts (``ResourceLimitError`` naming the run)."""
+    count, step = steps_for(path, steps, dt)
+    limits.check(f"the LAMMPS run ({count} steps of dt = {step:.3g} s)", steps=count, samples=count + 1,
+                 memory=BYTES_PER_CSV_VALUE * (count + 1) * len(OUTPUT_COLUMNS))
+    return count, step
+
+
 def run_lammps(contact: Contact, path: Path, normal: str = "hertz/material", tangential: str = "none", *,
                steps: int | None = None, dt: float | None = None, limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
     """Run LAMMPS's granular wall model ``normal`` + ``tangential`` for ``contact`` along ``path``.
@@ -191,9 +201,7 @@ def run_lammps(contact: Contact, path: Path, normal: str = "hertz/material", tan
     numbers = wall_coefficients(contact, model, _deepest_radius(contact, path)
                                 if model.tangential == "linear_history" else None)
     check_depth_within_sphere(contact.indenter.R, path)
-    count, step = steps_for(path, steps, dt)
-    limits.check(f"the LAMMPS run ({count} steps of dt = {step:.3g} s)", steps=count, samples=count + 1,
-                 memory=BYTES_PER_CSV_VALUE * (count + 1) * len(OUTPUT_COLUMNS))
+    count, step = check_run_limits(path, steps, dt, limits)
     deck = input_deck(contact, model, numbers, path, count, step)
     with tempfile.TemporaryDirectory(prefix="mdr-events-lammps-") as folder:
         table, version = run_deck(deck, FilePath(folder) / "forces.txt")
