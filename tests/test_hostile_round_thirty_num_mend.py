@@ -42,3 +42,33 @@ def test_a_flat_punch_s_first_touch_slides_as_the_contact_starts(layer, friction
     elif layer.is_half_space:  # (every spring slides iff |dx/dd| >= kappa on the first segment)
         first = 90.0 if scenario == "B" else alpha
         assert sliding[0] == float(1.0 / math.tan(math.radians(first)) >= coulomb_cap_ratio(friction, PAPER))
+
+
+# -- R1: at a corner the other cap's zone, reached only at the edge beside a full slip, was met again for ever ---------
+
+#: How far F_x / F_N may lie from mu in full slip (relative): F_x is set to mu F_N (10) where every spring reaches
+#: the cap, then carried by the span's interpolant, some ulps a step.
+FULL_SLIP_RTOL = 1e-12
+
+
+@pytest.mark.parametrize("n", [9.0, 12.0])
+@pytest.mark.parametrize("alpha", [10.0, 30.0, 45.0])
+@pytest.mark.parametrize("mu, nu", [(0.3, 0.5), (1.0, 0.3), (0.1, -0.9)])
+def test_a_corner_in_full_slip_under_coulomb_s_law_is_passed(n, alpha, mu, nu):
+    contact = me.Contact(me.Elastomer(PAPER.E, nu), me.PowerLaw(3e-4 / 1e-3 ** n, n), me.Adhesion(0.0, 0.0),
+                         me.FrictionLaw("coulomb", mu=mu))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ds = me.simulate(contact, me.Scenario("A", alpha, 3e-4, 1e-6), method="continuum")
+    kinds = [str(kind) for kind in ds["event_kind"].values[0]]
+    assert kinds.index("corner") < kinds.index("contact_ends")
+    corner = 3e-4 / (1e-6 * math.sin(math.radians(alpha)))
+    k = int(np.searchsorted(ds["time"].values, corner)) - 1
+    ratio = ds["tangential_force"].values[0, k:k + 2] / ds["normal_force"].values[0, k:k + 2]
+    if "full_slip" in kinds[:kinds.index("corner")]:  # (every spring at the cap either side of the corner)
+        np.testing.assert_allclose(ratio, mu, rtol=FULL_SLIP_RTOL)
+    else:  # (mu = 1 at 45 deg: the slip zone stops short of the centre, |F_x| below mu F_N)
+        assert np.all(np.abs(ratio) < mu)
+    alive = np.isfinite(ds["indentation_depth"].values)
+    for name in ("normal_force", "tangential_force", "contact_area"):
+        assert np.all(np.isfinite(ds[name].values[alive])), name
