@@ -68,19 +68,18 @@ def first_touch_fraction(tau0_cap: float, along_first_segment: Callable[[], floa
     return 0.0 if tau0_cap > 0.0 else float(along_first_segment())
 
 
-def first_segment_middle(segment, t_contact: float) -> float:
+def first_segment_middle(solution) -> float:
     """The middle of the path segment in contact at the first contact (s from first contact).
 
     Parameters
     ----------
-    segment : Segment
-        The segment of the span that holds the first contact (its ``t1`` on the path's clock).
-    t_contact : float
-        The first contact (s on the path's clock).
+    solution : PathSolution
+        The run: its span holding the first contact gives the segment (its ``t1`` on the path's clock).
 
     Returns
     -------
     float
         ``(t1 − t_contact) / 2``.
     """
-    return 0.5 * (segment.t1 - t_contact)
+    segment = solution.spans[int(solution.span_index(np.zeros(1))[0])].segment
+    return 0.5 * (segment.t1 - solution.t_contact)

@@ -176,8 +176,7 @@ def _first_touch(model: KernelModel, play: PlaySprings, solution, raw: dict, cas
     middle of the first segment with Coulomb's part alone."""
     rows = first_touch_rows(model.profile, raw["time"], raw["indentation_depth"][case], raw["contact_radius"][case])
     if np.any(rows):
-        segment = solution.spans[int(solution.span_index(np.zeros(1))[0])].segment
-        middle = np.array([first_segment_middle(segment, solution.t_contact)])
+        middle = np.array([first_segment_middle(solution)])
         raw["sliding_fraction"][case][rows] = first_touch_fraction(solution.model.K, lambda: _samples(
             play, middle + solution.t_contact, contact_radii(solution, middle))[1][0])
 

@@ -364,8 +364,7 @@ def _fill_first_touch(solution: PathSolution, times: np.ndarray, out: dict[str, 
     the contact starts, written into ``out``."""
     rows = first_touch_rows(solution.model.profile, times, out["indentation_depth"], out["contact_radius"])
     if np.any(rows):
-        segment = solution.spans[int(solution.span_index(np.zeros(1))[0])].segment
-        middle = first_segment_middle(segment, solution.t_contact)
+        middle = first_segment_middle(solution)
         out["sliding_fraction"][rows] = first_touch_fraction(
             solution.model.K, lambda: evaluate(solution, np.array([middle]))["sliding_fraction"][0])
 
