@@ -72,3 +72,19 @@ def test_a_corner_in_full_slip_under_coulomb_s_law_is_passed(n, alpha, mu, nu):
     alive = np.isfinite(ds["indentation_depth"].values)
     for name in ("normal_force", "tangential_force", "contact_area"):
         assert np.all(np.isfinite(ds[name].values[alive])), name
+
+
+# -- R2: with dgamma0 = 0 a spring attaches at its crossing of d = g: a crossing a rounding later relabelled it --------
+
+@pytest.mark.parametrize("mu", [0.3, 1e3])
+def test_springs_attached_uncompressed_keep_their_provenance(mu):
+    contact = me.Contact(me.Elastomer(PAPER.E, 0.5), me.PowerLaw(3e-4 / 1e-36, 12.0), me.Adhesion(0.0, 0.15),
+                         me.FrictionLaw("coulomb", mu=mu), me.Layer(5e-3, "bonded"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ds = me.simulate(contact, me.Scenario("A", 90.0, 1e-6, 1e-6), method="continuum", samples=101)
+    kinds = [str(kind) for kind in ds["event_kind"].values[0]]
+    assert kinds[-1] == "pull_off"
+    alive = np.isfinite(ds["indentation_depth"].values)
+    assert np.all(np.isfinite(ds["normal_force"].values[alive]))
+    assert np.all(ds["tangential_force"].values[alive] == 0.0)  # (a vertical path: every anchor at x = 0)
