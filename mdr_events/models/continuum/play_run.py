@@ -53,6 +53,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
+from .first_touch import first_segment_middle, first_touch_fraction, first_touch_rows
 from .play_pieces import log_pieces
 from .play_reach import constant_part, pressed_time, reach_times, reach_ulps
 from .play_samples import (FULL_SHARE, PROBE_POINTS, PROBE_SHARE, _compressed, _distances, _edge, _event, _events,
@@ -161,12 +162,24 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
                          lambda scan: contact_radii(solution, scan), limits)
         raw["tangential_force"][case] = np.where(np.isnan(raw["tangential_force"][case]), np.nan, run.force)
         raw["sliding_fraction"][case] = np.where(radius > 0, run.sliding, np.nan)
+        _first_touch(model, play, solution, raw, case)
         kept = [event for event in solution.events if event.kind not in _SPRING_EVENTS]
         raw["events"][case] = sorted(kept + run.events, key=lambda event: event.time)
         extrema = solution_extrema(solution)
         extrema.update(run.extrema)
         raw["extrema"].append(extrema)
     return raw
+
+
+def _first_touch(model: KernelModel, play: PlaySprings, solution, raw: dict, case: int) -> None:
+    """The sliding fraction of case ``case`` at a flat face's first touch (:mod:`.first_touch`: 0/0 there, the
+    springs' history out of contact at ``d = 0``), its limit as the contact starts: the springs' own value in the
+    middle of the first segment with Coulomb's part alone."""
+    rows = first_touch_rows(model.profile, raw["time"], raw["indentation_depth"][case], raw["contact_radius"][case])
+    if np.any(rows):
+        middle = np.array([first_segment_middle(solution)])
+        raw["sliding_fraction"][case][rows] = first_touch_fraction(solution.model.K, lambda: _samples(
+            play, middle + solution.t_contact, contact_radii(solution, middle))[1][0])
 
 
 class SpringRun(NamedTuple):

@@ -13,6 +13,7 @@ from .dense import cut, force_values
 from .span_forces import span_forces
 from .span_sliding import span_sliding_lengths, takes_batch
 from .graded import span_variable
+from .first_touch import first_segment_middle, first_touch_fraction, first_touch_rows
 from .model import ContinuumModel
 from .sample_forces import FillRoute, force_rows, normal_forces, paraboloid_on_half_space, polynomial_forces
 from .sample_radii import _quartic_radii, _sampled_radii
@@ -341,6 +342,7 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         spans_rows = _span_rows(solution.span_index(times), inside, len(solution.spans))
     if solution.compressed is None:
         _fill_spans(solution, times, spans_rows, out)
+        _fill_first_touch(solution, times, out)
         return out
     # the compressed zone's run (Coulomb's law alone with adhesion) evaluated once, not span by span
     zone = evaluate(solution.compressed, times)
@@ -353,7 +355,18 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     for (_, rows), span in zip(spans_rows, filled):
         for name, values in span.items():
             out[name][rows] = values
+    _fill_first_touch(solution, times, out)
     return out
+
+
+def _fill_first_touch(solution: PathSolution, times: np.ndarray, out: dict[str, np.ndarray]) -> None:
+    """:func:`evaluate`'s sliding fraction at a flat face's first touch (:mod:`.first_touch`: 0/0 there), its limit as
+    the contact starts, written into ``out``."""
+    rows = first_touch_rows(solution.model.profile, times, out["indentation_depth"], out["contact_radius"])
+    if np.any(rows):
+        middle = first_segment_middle(solution)
+        out["sliding_fraction"][rows] = first_touch_fraction(
+            solution.model.K, lambda: evaluate(solution, np.array([middle]))["sliding_fraction"][0])
 
 
 def _fill_pull_off(solution: PathSolution, times: np.ndarray, after_end: np.ndarray,

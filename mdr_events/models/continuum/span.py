@@ -598,7 +598,8 @@ class SpanIntegrator:
         met = set()
         if not self.model.caps.frictionless and self.a0 > 0:
             for cap in Cap:
-                if (self.sliding[cap] or self.may_push(cap)) and self.reaches(cap)(self.start) > 0.0:
+                if (self.sliding[cap] or self.may_push(cap)) and self.reaches(cap)(self.start) > 0.0 \
+                        and not self.edge_beside_full(cap):
                     met.add((Trigger.ZONE_REACHES, cap))
         if met:
             return frozenset(met)
@@ -610,6 +611,30 @@ class SpanIntegrator:
                 elif self.shrinking and self.zones[cap].edge_front_outward and self.leaves_edge(cap)(self.start) > 0:
                     met.add((Trigger.ZONE_LEAVES_EDGE, cap))
         return frozenset(met)
+
+    def edge_beside_full(self, cap: Cap) -> bool:
+        """Whether ``cap``'s target at the start is the edge's own value while every spring sits at the other cap under
+        Coulomb's law alone (``K = 0``): there the gap ``2κ (d − g(a))`` between the level and the target vanishes
+        identically (:func:`~.solve.edge_zone_beside_full`, which lays the zone out as none), so a reading above 0 at
+        the start is the rounding of ``g(a)``, not a zone reached (met again at once, for ever: a power law of n = 9
+        or 12 under Coulomb's law at the corner of scenario A, 20 ulp of the level against an offset of 18).
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+
+        Returns
+        -------
+        bool
+            ``True`` where the start's reading of :meth:`reaches` is to be ignored.
+        """
+        zone = self.zones[cap]
+        if self.model.caps.K != 0.0 or not zone.edge_is_target:
+            return False
+        radius = self.radius_of(self.start)
+        return zone.edge_value(radius) <= zone.fixed_target \
+            and self.zones[Cap(-cap)].summary(radius).slip is Slip.FULL
 
     def max_step(self) -> float:
         """The longest step of the solver (in the integration variable): with a front in a piece, a share
