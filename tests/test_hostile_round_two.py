@@ -292,8 +292,8 @@ def test_every_file_the_readme_names_exists():
 
 def test_a_long_read_says_how_far_it_is(tmp_path, capsys, monkeypatch):
     """A long CSV file's read reports every PROGRESS_ROWS rows (here 500 of 1200)."""
-    from mdr_events.io import candidates
-    monkeypatch.setattr(candidates, "PROGRESS_ROWS", 500)
+    from mdr_events.io import candidates, text_tables
+    monkeypatch.setattr(text_tables, "PROGRESS_ROWS", 500)
     path = tmp_path / "long.csv"
     path.write_text("time,normal_force\n" + "".join(f"{k},0\n" for k in range(1200)))
     heard = []
