@@ -13,10 +13,8 @@ from mdr_events.theory.job import rate_independent
 from mdr_events.analysis.validate import (BYTES_PER_VALIDATED_SAMPLE, DEFAULT_TOLERANCE, one_path, one_path_job,
                                           validate)
 from mdr_events.contact import Contact
-from mdr_events.dem.deck import OUTPUT_COLUMNS
 from mdr_events.dem.mapping import LammpsModel, check_model
-from mdr_events.io.candidates import BYTES_PER_CSV_VALUE
-from mdr_events.dem.runner import check_run_limits, run_lammps
+from mdr_events.dem.runner import BYTES_PER_RUN_SAMPLE, check_run_limits, run_lammps
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.motion import Paths
 from mdr_events.models.paths import Path
@@ -69,7 +67,7 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
     limits = check_limits(limits)
     count = check_run_limits(path, steps, dt, limits)[0] + 1
     limits.check(f"validating the LAMMPS run's {count} samples",
-                 memory=count * (BYTES_PER_VALIDATED_SAMPLE + BYTES_PER_CSV_VALUE * len(OUTPUT_COLUMNS)))
+                 memory=count * (BYTES_PER_VALIDATED_SAMPLE + BYTES_PER_RUN_SAMPLE))
     run = run_lammps(contact, path, model.normal, model.tangential, steps=steps, dt=dt, limits=limits)
     report = validate(run, contact, motion, alpha, tolerance=tolerance, limits=limits, time_origin="path_start")
     report.attrs.update({key: value for key, value in run.attrs.items() if key.startswith("lammps_")})

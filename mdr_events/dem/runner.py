@@ -23,7 +23,7 @@ import xarray as xr
 from mdr_events.contact import Contact
 from mdr_events.dem.deck import OUTPUT_COLUMNS, check_depth_within_sphere, input_deck, steps_for
 from mdr_events.dem.mapping import LammpsModel, NORMAL_MODELS, TANGENTIAL_MODELS, wall_coefficients
-from mdr_events.io.candidates import BYTES_PER_CSV_VALUE
+from mdr_events.io.text_tables import BYTES_PER_CSV_VALUE
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models import indenters
@@ -31,7 +31,7 @@ from mdr_events.models.paths import Path
 from mdr_events.validation import shown
 
 __all__ = ["LammpsUnavailable", "LammpsError", "load_lammps", "run_deck", "run_lammps", "check_run_limits",
-           "LAMMPS_RUN_CONTENT", "EXTRA"]
+           "BYTES_PER_RUN_SAMPLE", "LAMMPS_RUN_CONTENT", "EXTRA"]
 
 #: The optional extra that installs LAMMPS.
 EXTRA = "mdr_events[lammps]"
@@ -148,13 +148,18 @@ def _dataset(table: np.ndarray, contact: Contact, path: Path, attrs: dict[str, A
                  path_waypoints=path.describe(), path_speed=path.speed, time_origin="path_start", **attrs)
 
 
+#: Bytes a LAMMPS run holds a sample: its table read back, :data:`~mdr_events.dem.deck.OUTPUT_COLUMNS` values of
+#: :data:`~mdr_events.io.text_tables.BYTES_PER_CSV_VALUE`.
+BYTES_PER_RUN_SAMPLE = BYTES_PER_CSV_VALUE * len(OUTPUT_COLUMNS)
+
+
 def check_run_limits(path: Path, steps: int | None, dt: float | None, limits: Limits) -> tuple[int, float]:
     """The LAMMPS run's steps and time step along ``path`` (:func:`~mdr_events.dem.deck.steps_for`), its steps, samples
-    and the table it reads back (:data:`~mdr_events.io.candidates.BYTES_PER_CSV_VALUE` a value) checked against
+    and the table it reads back (:data:`~mdr_events.io.text_tables.BYTES_PER_CSV_VALUE` a value) checked against
     ``limits`` before LAMMPS starts (``ResourceLimitError`` naming the run)."""
     count, step = steps_for(path, steps, dt)
     limits.check(f"the LAMMPS run ({count} steps of dt = {step:.3g} s)", steps=count, samples=count + 1,
-                 memory=BYTES_PER_CSV_VALUE * (count + 1) * len(OUTPUT_COLUMNS))
+                 memory=BYTES_PER_RUN_SAMPLE * (count + 1))
     return count, step
 
 
@@ -176,7 +181,7 @@ def run_lammps(contact: Contact, path: Path, normal: str = "hertz/material", tan
         The number of steps, or the time step in s (default 10⁴ steps over the path).
     limits : Limits
         What the run may use: its steps count as ``steps`` and ``samples`` (LAMMPS prints one row per step), the rows
-        read back :data:`~mdr_events.io.candidates.BYTES_PER_CSV_VALUE` per value as ``memory``; checked before LAMMPS
+        read back :data:`~mdr_events.io.text_tables.BYTES_PER_CSV_VALUE` per value as ``memory``; checked before LAMMPS
         starts.
 
     Returns
