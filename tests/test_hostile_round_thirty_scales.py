@@ -130,3 +130,46 @@ def test_half_space_pull_off_radius_is_the_closed_form(radius, work):
     found = pull_off(me.Paraboloid(radius), E_star, PAPER.nu, work, me.Layer())
     exact = (9.0 * np.pi * work * radius ** 2 / (8.0 * E_star)) ** (1.0 / 3.0)
     assert found.radius == pytest.approx(exact, rel=64 * float(np.finfo(float).eps), abs=0.0)
+
+
+#: The speed factor of h122's open case: the paper's 1 µm/s times 2^20 (about 1 m/s), whose first depth after the
+#: touch rounds to a subnormal (1.14e-322 m).
+FAST = 2.0 ** 20
+#: How closely the layer's radius meets the half-space's closed form where the branch hands over to it: the layer's
+#: correction there is of the order of ``a/h = HALF_SPACE_SHARE`` (an ulp), Newton's iteration converged to 1e-14.
+HAND_OVER_RTOL = 1e-14
+
+
+def test_a_layer_run_whose_first_depth_is_subnormal_runs():
+    """h122's open case: Coulomb's part on the 5 mm bonded layer along A 20° at ~1 m/s raised "the radius of
+    depth=1.14e-322 m ... did not converge" (Newton's iteration halving its way down from the scan's first radius). A
+    depth where the branch is the half-space's to rounding has the half-space's radius in closed form; the run is
+    finite in contact, its sliding fraction a share."""
+    contact = me.Contact(me.Elastomer(324e3, 0.5), me.Paraboloid(0.03), me.Adhesion(0.01, 0.15),
+                         me.FrictionLaw("coulomb", mu=0.3), me.Layer(5e-3))
+    run = me.simulate(contact, me.Scenario("A", alpha=[20.0], d_max=3e-4, v=1e-6 * FAST), method="continuum")
+    in_contact = run["contact_area"].values > 0
+    for name in ("normal_force", "tangential_force", "contact_radius", "contact_area"):
+        assert np.all(np.isfinite(run[name].values[in_contact])), name
+    sliding = run["sliding_fraction"].values[in_contact]
+    assert np.all((sliding >= 0) & (sliding <= 1)) and float(run["tangential_force"].max()) > 0
+
+
+def test_the_layers_radius_hands_over_to_the_half_space_continuously():
+    """Below ``kc (HALF_SPACE_SHARE h)ⁿ`` the radius without adhesion is ``d^(1/n)/(κc)^(1/n)``; above it Newton's
+    iteration on the layer's branch: the two meet to rounding, the array route gives the scalar's, and a subnormal
+    depth has a finite radius."""
+    from mdr_events.models.continuum.layer_branch import LayerBranch
+    from mdr_events.theory.layer.scalar_factors import NormalFactors
+
+    params, layer = me.Parameters.paper(), me.Layer(5e-3)
+    branch = LayerBranch(params, 0.0, me.Paraboloid(0.03), layer, NormalFactors(params.nu, layer, 2.0))
+    hand_over = branch._half_space_depth
+    for depth in (hand_over * (1 + 1e-12), hand_over * (1 - 1e-12)):  # (Newton's side, the closed form's side)
+        np.testing.assert_allclose(branch.radius(depth, HAND_OVER_RTOL), np.sqrt(depth / branch.kc),
+                                   rtol=HAND_OVER_RTOL)
+    depths = np.array([1e-322, 1e-300, hand_over / 2, hand_over * 2, 1e-20])
+    scalar = np.array([branch.radius(depth, HAND_OVER_RTOL) for depth in depths])
+    assert np.all(np.isfinite(scalar) & (scalar > 0))
+    np.testing.assert_allclose(branch.radii(depths), scalar, rtol=HAND_OVER_RTOL)
+    np.testing.assert_allclose(scalar[:3], np.sqrt(depths[:3]) / np.sqrt(branch.kc), rtol=HAND_OVER_RTOL)

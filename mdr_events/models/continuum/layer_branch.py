@@ -46,6 +46,12 @@ VALUE_CACHE = 64
 START_SCAN_PER_DECADE = 128
 #: The start scan's lowest radius without adhesion, in layer thicknesses (the branch starts at ``a = 0`` there).
 START_SCAN_FLOOR = 1e-6
+#: Without adhesion, a contact below this share of the layer's thickness is the half-space's to rounding: the layer's
+#: correction to ``d = κ c aⁿ`` is of the order of ``a/h`` (its tables' series), below an ulp there. Its radius is
+#: then ``d^(1/n)/(κc)^(1/n)`` in closed form (each power of a double, not of their quotient, which underflows): Newton's iteration from the scan's first radius (``START_SCAN_FLOOR h``) halves
+#: its way down and did not reach the radius of a subnormal first depth (1e-322 m, a run at 1 m/s) in
+#: :data:`ROOT_ITERATIONS` steps, where ``d(a)`` cannot be evaluated anyway (``aⁿ`` underflows).
+HALF_SPACE_SHARE = float(np.finfo(float).eps)
 #: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).
 _SCAN_PER_DECADE = 5
 
@@ -97,6 +103,8 @@ class LayerBranch(Branch):
         self.jump_off_radius = self._jump_off_radius() if work > 0.0 else 0.0
         self.jump_off_depth = self.depth(self.jump_off_radius)
         self._floor = self.jump_off_radius
+        #: the depth below which the branch is the half-space's to rounding (:data:`HALF_SPACE_SHARE`; adhesion: none)
+        self._half_space_depth = self.kc * (HALF_SPACE_SHARE * self.h) ** self.n if work == 0.0 else 0.0
         self._start_scan: tuple | None = None  # (:meth:`_scans`: when asked)
 
     # --- what a kind of indenter sets (:class:`~.layer_punch_branch.LayerPunchBranch` the flat face's) --------------
@@ -279,8 +287,8 @@ class LayerBranch(Branch):
         ValueError
             A radius beyond the tables (``a/h > 64``).
         """
-        if self.work == 0.0 and depth <= 0:  # no contact above the surface
-            return 0.0
+        if self.work == 0.0 and depth <= self._half_space_depth:  # (above the surface: no contact)
+            return 0.0 if depth <= 0 else depth ** (1.0 / self.n) / self.kc ** (1.0 / self.n)
         if depth <= self.jump_off_depth:
             if depth < self.jump_off_depth - FOLD_SHARE * abs(self.jump_off_depth):
                 return math.nan
@@ -353,9 +361,10 @@ class LayerBranch(Branch):
         out = np.full(depth.shape, np.nan)
         fold = self.jump_off_depth - FOLD_SHARE * abs(self.jump_off_depth)
         out[(depth <= self.jump_off_depth) & (depth >= fold)] = self.jump_off_radius
-        if self.work == 0.0:
-            out[depth <= 0.0] = 0.0
-        inside = depth > (0.0 if self.work == 0.0 else self.jump_off_depth)
+        if self.work == 0.0:  # (the half-space's below its depth: :meth:`radius` point by point)
+            shallow = depth <= self._half_space_depth
+            out[shallow] = [self.radius(value, RADII_RTOL) for value in depth[shallow].tolist()]
+        inside = depth > (self._half_space_depth if self.work == 0.0 else self.jump_off_depth)
         count = int(np.count_nonzero(inside))
         if count > SCALAR_RADII:
             out[inside] = self._roots(depth[inside])
