@@ -17,7 +17,8 @@ from typing import ClassVar, NamedTuple, Sequence
 import numpy as np
 import xarray as xr
 
-__all__ = ["Verdict", "ConvergenceVerdict", "ValidationReport", "ConvergenceReport", "validation_failures", "ValidationMeasures", "EventTimes",
+__all__ = ["Verdict", "ConvergenceVerdict", "ValidationReport", "ConvergenceReport", "validation_failures",
+           "ValidationMeasures", "EventTimes",
            "LEFT_OUT_BOUND", "VALIDATION_CONTENT", "check_content", "CONVERGENCE_STUDY_CONTENT"]
 
 #: The ``content`` attribute of a validation's and of a convergence study's dataset.

@@ -313,7 +313,7 @@ def _sweep_bytes(job: SweepJob, runs: int) -> int:
     of 1e5 history samples peaked at 390 B a sample where 96 B were counted; 4.1 times, issue 32 round 30)."""
     spec, samples = job.spec, job.spec.history_samples
     stored = runs * (len(spec.quantities) + (0 if samples is None else len(HISTORY_QUANTITIES) * samples))
-    evaluated = EVALUATION_BYTES_PER_SAMPLE * samples if samples and spec.method.name == Continuum.name else 0
+    evaluated = EVALUATION_BYTES_PER_SAMPLE * samples if samples and isinstance(spec.method, Continuum) else 0
     has_store = job.output.store is not None
     return BYTES_PER_STORED_VALUE * stored + evaluated + (store_bytes(runs, len(job.grid.names)) if has_store else 0)
 

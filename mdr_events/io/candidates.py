@@ -213,7 +213,8 @@ def _check_labelled_at(dataset: xr.Dataset, source: str, dimension: str, value: 
     value = check_real(f"select[{dimension!r}]", value, "one coordinate value, a number")
     labels = dataset[dimension].values.ravel()
     if not _labelled_as(labels, value)[0]:
-        raise ValueError(f"{source} holds one run at {dimension}={float(labels[0])!r}, not at {dimension}={value!r}; allowed: "
+        raise ValueError(f"{source} holds one run at {dimension}={float(labels[0])!r}, not at {dimension}={value!r}; "
+                         "allowed: "
                          f"the run's own {dimension} (another run's output judged as this one's would pass or fail "
                          "for the wrong reason)")
 
@@ -246,8 +247,8 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         Quantity -> unit (:data:`UNITS`, e.g. ``"mN"``, ``"ms"``, ``"um"``); default the ``units`` attribute of
         a Dataset's or netCDF file's variable, else SI.
     limits : Limits, optional
-        A CSV file's rows count as ``samples`` and :data:`~mdr_events.io.text_tables.BYTES_PER_CSV_VALUE` each as ``memory``, checked before
-        they are read (``ResourceLimitError``).
+        A CSV file's rows count as ``samples`` and :data:`~mdr_events.io.text_tables.BYTES_PER_CSV_VALUE` each as
+        ``memory``, checked before they are read (``ResourceLimitError``).
     select : mapping, optional
         A dataset of several runs (a simulation along ``alpha``): the one at these coordinates (``{"alpha": 20}``).
     progress : callable, optional

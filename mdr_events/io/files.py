@@ -244,8 +244,7 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
                                                      dir=target.parent)
             except OSError as error:  # the directory takes no new file (a read-only mount, /proc)
                 raise ValueError(f"path={shown_path(file.path, quoted=True)} is not allowed (no file can be created "
-                                 "there: "
-                                 f"{error.strerror}); allowed: {ALLOWED_FILE}") from None
+                                 f"there: {error.strerror}); allowed: {ALLOWED_FILE}") from None
             handles.append(handle)
             temporaries.append(temporary)
             names[temporary] = os.fspath(target)

@@ -12,7 +12,8 @@ from typing import Any
 from mdr_events.validation import shown
 
 __all__ = ["check_file_path", "prepare_output_directory", "check_output_file", "check_output_stem",
-           "is_temporary_name", "make_directories", "input_file_problem", "TEMPORARY_MARKER", "MAX_STEM_BYTES", "MAX_NAME_BYTES",
+           "is_temporary_name", "make_directories", "input_file_problem", "TEMPORARY_MARKER", "MAX_STEM_BYTES",
+           "MAX_NAME_BYTES",
            "SYSTEM_DIRECTORIES", "ALLOWED_PATH", "ALLOWED_FILE"]
 
 #: What marks a temporary file of :func:`atomic_write`: ``.<target name>.mdr-tmp-<random><suffix>``.

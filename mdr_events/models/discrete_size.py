@@ -63,7 +63,8 @@ def _beyond_the_tables(springs: Springs, dx: float, max_depth: float, needed: in
     thickness = springs.layer.thickness  # (only a layer's springs are bounded: the half-space's most is sys.maxsize)
     reach, radius = LAMBDA_MAX * thickness, springs.branch_radius(max_depth)
     finer = (reach - radius) / SPRINGS_TO_THE_TABLES_EDGE
-    spacing = (f"dx <= {allowed_bound(finer, lambda value: value <= finer, True, 3)} m (the contact radius {radius:.6g} m is {reach - radius:.3g} m within the tables' "
+    spacing = (f"dx <= {allowed_bound(finer, lambda value: value <= finer, True, 3)} m (the contact radius "
+               f"{radius:.6g} m is {reach - radius:.3g} m within the tables' "
                f"64 h = {reach:.6g} m), " if finer > 0 else
                f"no dx (the contact radius {radius:.6g} m reaches the tables' 64 h = {reach:.6g} m), but ")
     smaller = (f"a face's radius below {reach:.6g} m (with a dx that fits {SPRINGS_TO_THE_TABLES_EDGE} springs "
@@ -83,11 +84,13 @@ def check_spacing(params: Parameters, dx: float, depth: float | None = None, pro
     depth = params.d_max if depth is None else depth
     radius = springs_of(params, profile, None, layer).branch_radius(depth)
     if not radius / dx >= MIN_SPRINGS_IN_CONTACT:
+        most = allowed_bound(radius / MIN_SPRINGS_IN_CONTACT, lambda most: radius / most >= MIN_SPRINGS_IN_CONTACT,
+                             True)
         raise ValueError(
             f"dx={dx!r} m puts {int(radius // dx) if radius == radius else 0} springs per side in contact "
             f"at the deepest point d = {depth!r} m; "
             f"allowed: at least {MIN_SPRINGS_IN_CONTACT}, i.e. dx <= "
-            f"{allowed_bound(radius / MIN_SPRINGS_IN_CONTACT, lambda most: radius / most >= MIN_SPRINGS_IN_CONTACT, True)} m"
+            f"{most} m"
         )
     return dx
 

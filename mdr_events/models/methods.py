@@ -219,7 +219,8 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
     if dt is not None and not count <= MAX_COUNT:  # (round twenty-one: dt=5e-324 gave int(inf), an internal error)
         raise ValueError(f"dt={shown(dt)} is not allowed: the longest case's {longest:.6g} s from first contact would "
                          f"take {count:.3g} steps; allowed: a time step in s >= "
-                         f"{allowed_bound(longest / MAX_COUNT, lambda least: longest / least <= MAX_COUNT, False, 3)} (at most "
+                         f"{allowed_bound(longest / MAX_COUNT, lambda least: longest / least <= MAX_COUNT, False, 3)} "
+                         "(at most "
                          f"{MAX_COUNT:.0e} steps, which the limits refuse long before: --limit steps)")
     shortest = math.inf
     for path in paths:

@@ -48,8 +48,8 @@ START_SCAN_PER_DECADE = 128
 START_SCAN_FLOOR = 1e-6
 #: Without adhesion, a contact below this share of the layer's thickness is the half-space's to rounding: the layer's
 #: correction to ``d = κ c aⁿ`` is of the order of ``a/h`` (its tables' series), below an ulp there. Its radius is
-#: then ``d^(1/n)/(κc)^(1/n)`` in closed form (each power of a double, not of their quotient, which underflows): Newton's iteration from the scan's first radius (``START_SCAN_FLOOR h``) halves
-#: its way down and did not reach the radius of a subnormal first depth (1e-322 m, a run at 1 m/s) in
+#: then ``d^(1/n)/(κc)^(1/n)`` in closed form (each power of a double, not of their quotient, which underflows):
+#: Newton's iteration from the scan's first radius (``START_SCAN_FLOOR h``) halves its way down and did not reach the radius of a subnormal first depth (1e-322 m, a run at 1 m/s) in
 #: :data:`ROOT_ITERATIONS` steps, where ``d(a)`` cannot be evaluated anyway (``aⁿ`` underflows).
 HALF_SPACE_SHARE = float(np.finfo(float).eps)
 #: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).

@@ -597,7 +597,8 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         k = int(np.argmax(sign * force))
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
-        refined_at, found = None, []  # (where the best's refinement found a better F_x: a local extremum of its bracket)
+        # (where the best's refinement found a better F_x: a local extremum of its bracket)
+        refined_at, found = None, []
         # (at a corner F_x kinks but may go on growing past it, as where the depth turns and x does not: issue 32
         # round 27 Z4; the corner is an end of the pieces on each side, whose interior extrema the one-sided slopes
         # there and the scan's differences bracket (_slope_brackets, refined below), so a corner is not refined
