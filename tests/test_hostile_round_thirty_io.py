@@ -5,6 +5,7 @@ note)."""
 
 from __future__ import annotations
 
+import math
 import os
 import warnings
 from fractions import Fraction
@@ -239,6 +240,18 @@ def test_final_depth_that_is_no_depth_is_refused_by_its_name(indenter, value):
     ``final_depth``."""
     angle = _b_plus_angle(indenter)
     one_line_naming(lambda: angle(value), "final_depth")
+
+
+@pytest.mark.parametrize("value", [10**400, math.inf, True, "6e-4"], ids=["huge int", "inf", "True", "str"])
+def test_the_b_plus_path_reads_its_final_depth_as_the_closed_forms_do(value):
+    """The re-read's twin of the two fixes above: ``Path.scenario_B_indentation`` read ``final_depth`` by ``float()``
+    on its own: ``True`` made a path to 1 m, ``inf`` and ``10**400`` a path of infinite waypoints refused by another
+    name. It reads it as ``critical_angle`` does (``final_depth_of``): refused by its name, and a ``Fraction`` is its
+    float's path."""
+    params = me.Parameters.paper()
+    one_line_naming(lambda: me.Path.scenario_B_indentation(30.0, params, value), "final_depth")
+    assert np.array_equal(me.Path.scenario_B_indentation(30.0, params, Fraction(3, 5000)).waypoints,
+                          me.Path.scenario_B_indentation(30.0, params, 6e-4).waypoints)
 
 
 def test_cross_check_takes_the_spacing_and_steps_discrete_takes(tmp_path):

@@ -272,9 +272,7 @@ class Path:
         """
         check_parameters(params)
         angle = _check_angle(alpha)
-        final = 2.0 * params.d_max if final_depth is None else float(final_depth)
-        if not final > params.d_max:
-            raise ValueError(f"final_depth={shown(final)} is not allowed; allowed: > d_max = {params.d_max!r}")
+        final = analytic.arguments.final_depth_of(params, final_depth)
         if angle == 0.0:
             raise ValueError("alpha=0.0: a path parallel to the surface never goes deeper than d_max; "
                              "allowed: 0 < alpha <= 90")
